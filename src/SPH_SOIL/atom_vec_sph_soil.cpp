@@ -1,0 +1,260 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package for LAMMPS: atom_style sph/soil
+------------------------------------------------------------------------- */
+
+#include "atom_vec_sph_soil.h"
+
+#include "atom.h"
+#include "error.h"
+#include "sph_soil_compat.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// Names under which our own arrays are registered in Atom's per-atom table. They carry a
+// prefix so that they cannot collide with another style's fields under atom_style hybrid.
+const char *const H_NAME = "sph_soil_h";
+const char *const STRESS_NAME = "sph_soil_stress";
+const char *const STRESS_RATE_NAME = "sph_soil_stress_rate";
+const char *const STRAIN_NAME = "sph_soil_strain";
+const char *const STRAIN_RATE_NAME = "sph_soil_strain_rate";
+const char *const SPIN_NAME = "sph_soil_spin";
+const char *const LEVEL_NAME = "sph_soil_level";
+const char *const WALL_NORMAL_NAME = "sph_soil_wall_normal";
+const char *const WALL_DISTANCE_NAME = "sph_soil_wall_distance";
+
+// What compute property/atom can read: name, array, column (-1 for a vector).
+enum Field { H, RHO, DRHO, STRESS, STRESS_RATE, STRAIN, STRAIN_RATE, SPIN, LEVEL, WALL_N, WALL_D, VEST };
+struct Property {
+  const char *name;
+  Field field;
+  int col;
+};
+const Property properties[] = {
+    {"h", H, -1},          {"rho", RHO, -1},         {"drho", DRHO, -1},
+    {"sxx", STRESS, 0},    {"syy", STRESS, 1},       {"szz", STRESS, 2},
+    {"sxy", STRESS, 3},    {"sxz", STRESS, 4},       {"syz", STRESS, 5},
+    {"dsxx", STRESS_RATE, 0}, {"dsyy", STRESS_RATE, 1}, {"dszz", STRESS_RATE, 2},
+    {"dsxy", STRESS_RATE, 3}, {"dsxz", STRESS_RATE, 4}, {"dsyz", STRESS_RATE, 5},
+    {"exx", STRAIN, 0},    {"eyy", STRAIN, 1},       {"ezz", STRAIN, 2},
+    {"exy", STRAIN, 3},    {"exz", STRAIN, 4},       {"eyz", STRAIN, 5},
+    {"edotxx", STRAIN_RATE, 0}, {"edotyy", STRAIN_RATE, 1}, {"edotzz", STRAIN_RATE, 2},
+    {"edotxy", STRAIN_RATE, 3}, {"edotxz", STRAIN_RATE, 4}, {"edotyz", STRAIN_RATE, 5},
+    {"wxy", SPIN, 0},      {"wxz", SPIN, 1},         {"wyz", SPIN, 2},
+    {"level", LEVEL, -1},
+    {"wall_nx", WALL_N, 0}, {"wall_ny", WALL_N, 1},  {"wall_nz", WALL_N, 2},
+    {"wall_d", WALL_D, -1},
+    {"vestx", VEST, 0},    {"vesty", VEST, 1},       {"vestz", VEST, 2},
+};
+constexpr int NPROPERTIES = sizeof(properties) / sizeof(properties[0]);
+
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
+    AtomVec(lmp), smoothing_length(nullptr), stress(nullptr), stress_rate(nullptr),
+    total_strain(nullptr), strain_rate(nullptr), spin(nullptr), level(nullptr),
+    wall_normal(nullptr), wall_distance(nullptr), rmass(nullptr), rho(nullptr), drho(nullptr),
+    vest(nullptr)
+{
+  molecular = Atom::ATOMIC;
+  mass_type = PER_ATOM;
+  forceclearflag = 1;
+
+  atom->rmass_flag = 1;
+  atom->rho_flag = 1;
+  atom->vest_flag = 1;
+
+  register_field(H_NAME, &smoothing_length, Atom::DOUBLE, 0);
+  register_field(STRESS_NAME, &stress, Atom::DOUBLE, NVOIGT);
+  register_field(STRESS_RATE_NAME, &stress_rate, Atom::DOUBLE, NVOIGT);
+  register_field(STRAIN_NAME, &total_strain, Atom::DOUBLE, NVOIGT);
+  register_field(STRAIN_RATE_NAME, &strain_rate, Atom::DOUBLE, NVOIGT);
+  register_field(SPIN_NAME, &spin, Atom::DOUBLE, NSPIN);
+  register_field(LEVEL_NAME, &level, Atom::INT, 0);
+  register_field(WALL_NORMAL_NAME, &wall_normal, Atom::DOUBLE, 3);
+  register_field(WALL_DISTANCE_NAME, &wall_distance, Atom::DOUBLE, 0);
+
+  // Which fields travel where (why):
+  //  comm (every step):  rho, stress, vest   - the pair sum needs them from ghosts
+  //  border:             + mass, h, wall data - constant between reneighborings
+  //  exchange/restart:   the whole state; the rates are recomputed before use
+  //  data file:          the whole state, see doc/atom_style_sph_soil.rst
+  const std::vector<std::string> rates = {"drho", STRESS_RATE_NAME, STRAIN_RATE_NAME, SPIN_NAME};
+  const std::vector<std::string> state = {"rmass",     "rho",      H_NAME,          "vest",
+                                          STRESS_NAME, STRAIN_NAME, LEVEL_NAME,      WALL_NORMAL_NAME,
+                                          WALL_DISTANCE_NAME};
+  std::vector<std::string> all = state;
+  all.insert(all.end(), rates.begin(), rates.end());
+  const std::vector<std::string> comm = {"rho", STRESS_NAME, "vest"};
+  const std::vector<std::string> border = {"rmass",  "rho",           STRESS_NAME,       "vest",
+                                           H_NAME,   WALL_NORMAL_NAME, WALL_DISTANCE_NAME};
+
+  using SphSoilCompat::assign_fields;
+  assign_fields(fields_grow, all, field_storage[0]);
+  assign_fields(fields_copy, all, field_storage[1]);
+  assign_fields(fields_comm, comm, field_storage[2]);
+  assign_fields(fields_comm_vel, comm, field_storage[3]);
+  assign_fields(fields_reverse, {}, field_storage[4]);
+  assign_fields(fields_border, border, field_storage[5]);
+  assign_fields(fields_border_vel, border, field_storage[6]);
+  assign_fields(fields_exchange, state, field_storage[7]);
+  assign_fields(fields_restart, state, field_storage[8]);
+  assign_fields(fields_create, all, field_storage[9]);
+  // Data files: LAMMPS 29Sep2021 reads lines of at most 255 characters, room for about ten
+  // full-precision numbers. The particle definition goes to Atoms, the stress (the state a
+  // user prepares, e.g. geostatic) rides with the velocity in Velocities. Total strain and
+  // wall data are in restart files only (doc/atom_style_sph_soil.rst).
+  assign_fields(fields_data_atom, {"id", "type", "rmass", H_NAME, "rho", LEVEL_NAME, "x"},
+                field_storage[10]);
+  assign_fields(fields_data_vel, {"id", "v", STRESS_NAME}, field_storage[11]);
+
+  setup_fields();
+}
+
+/* ----------------------------------------------------------------------
+   Add our array to Atom's per-atom table, or re-point an existing entry:
+   read_restart and a second atom_style command re-create the AtomVec, and
+   the table entry of the previous instance must then follow the new arrays.
+------------------------------------------------------------------------- */
+
+void AtomVecSPHSoil::register_field(const char *name, void *address, int datatype, int cols)
+{
+  for (int i = 0; i < atom->nperatom; i++) {
+    if (strcmp(atom->peratom[i].name, name) == 0) {
+      atom->peratom[i].address = address;
+      atom->peratom[i].datatype = datatype;
+      atom->peratom[i].cols = cols;
+      return;
+    }
+  }
+  atom->add_peratom(name, address, datatype, cols);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void AtomVecSPHSoil::process_args(int narg, char **arg)
+{
+  if (narg > 0)
+    error->all(FLERR, "Illegal atom_style sph/soil command: it takes no arguments, got '{}'",
+               arg[0]);
+}
+
+/* ----------------------------------------------------------------------
+   our own arrays are grown in place through their registered addresses;
+   the core ones live in Atom
+------------------------------------------------------------------------- */
+
+void AtomVecSPHSoil::grow_pointers()
+{
+  rmass = atom->rmass;
+  rho = atom->rho;
+  drho = atom->drho;
+  vest = atom->vest;
+}
+
+/* ----------------------------------------------------------------------
+   clear the rates that the pair style accumulates, starting at atom n
+------------------------------------------------------------------------- */
+
+void AtomVecSPHSoil::force_clear(int n, size_t nbytes)
+{
+  memset(&drho[n], 0, nbytes);
+  memset(&strain_rate[n][0], 0, NVOIGT * nbytes);
+  memset(&spin[n][0], 0, NSPIN * nbytes);
+}
+
+/* ----------------------------------------------------------------------
+   defaults for create_atoms: unit mass and density, everything else zero
+   (h must be set, e.g. with sph_soil/set, before a pair style can use it)
+------------------------------------------------------------------------- */
+
+void AtomVecSPHSoil::create_atom_post(int ilocal)
+{
+  rmass[ilocal] = 1.0;
+  rho[ilocal] = 1.0;
+}
+
+/* ----------------------------------------------------------------------
+   check what AtomVec::data_atom() just read and reset the rates
+------------------------------------------------------------------------- */
+
+void AtomVecSPHSoil::data_atom_post(int ilocal)
+{
+  const tagint id = atom->tag[ilocal];
+  if (!(rmass[ilocal] > 0.0))
+    error->one(FLERR, "Invalid mass {} of atom {} in Atoms section of data file: must be > 0",
+               rmass[ilocal], id);
+  if (!(smoothing_length[ilocal] >= 0.0) || !std::isfinite(smoothing_length[ilocal]))
+    error->one(FLERR,
+               "Invalid smoothing length h {} of atom {} in Atoms section of data file: must be >= 0",
+               smoothing_length[ilocal], id);
+  if (!(rho[ilocal] > 0.0) || !std::isfinite(rho[ilocal]))
+    error->one(FLERR, "Invalid density {} of atom {} in Atoms section of data file: must be > 0",
+               rho[ilocal], id);
+  if (level[ilocal] < 0)
+    error->one(FLERR,
+               "Invalid refinement level {} of atom {} in Atoms section of data file: must be >= 0",
+               level[ilocal], id);
+  drho[ilocal] = 0.0;
+  for (int k = 0; k < 3; k++) vest[ilocal][k] = wall_normal[ilocal][k] = 0.0;
+  wall_distance[ilocal] = 0.0;
+  for (int k = 0; k < NVOIGT; k++)
+    stress[ilocal][k] = stress_rate[ilocal][k] = total_strain[ilocal][k] = strain_rate[ilocal][k] = 0.0;
+  for (int k = 0; k < NSPIN; k++) spin[ilocal][k] = 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   index of a named per-atom property for compute property/atom, or -1
+------------------------------------------------------------------------- */
+
+int AtomVecSPHSoil::property_atom(char *name)
+{
+  for (int i = 0; i < NPROPERTIES; i++)
+    if (strcmp(name, properties[i].name) == 0) return i;
+  return -1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void AtomVecSPHSoil::pack_property_atom(int index, double *buf, int nvalues, int groupbit)
+{
+  if (index < 0 || index >= NPROPERTIES) return;
+  const Property &p = properties[index];
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+
+  double *vector = nullptr;
+  double **array = nullptr;
+  switch (p.field) {
+    case H: vector = smoothing_length; break;
+    case RHO: vector = rho; break;
+    case DRHO: vector = drho; break;
+    case WALL_D: vector = wall_distance; break;
+    case STRESS: array = stress; break;
+    case STRESS_RATE: array = stress_rate; break;
+    case STRAIN: array = total_strain; break;
+    case STRAIN_RATE: array = strain_rate; break;
+    case SPIN: array = spin; break;
+    case WALL_N: array = wall_normal; break;
+    case VEST: array = vest; break;
+    case LEVEL: break;
+  }
+
+  for (int i = 0, n = 0; i < nlocal; i++, n += nvalues) {
+    if (!(mask[i] & groupbit)) {
+      buf[n] = 0.0;
+    } else if (p.field == LEVEL) {
+      buf[n] = level[i];
+    } else if (vector) {
+      buf[n] = vector[i];
+    } else {
+      buf[n] = array[i][p.col];
+    }
+  }
+}

@@ -1,0 +1,62 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package for LAMMPS: atom_style sph/soil
+
+   Per-atom state of elastic-plastic SPH soil (Bui et al. 2008) with
+   dynamic particle refinement. See doc/atom_style_sph_soil.rst.
+------------------------------------------------------------------------- */
+
+#ifdef ATOM_CLASS
+// clang-format off
+AtomStyle(sph/soil,AtomVecSPHSoil);
+// clang-format on
+#else
+
+#ifndef LMP_ATOM_VEC_SPH_SOIL_H
+#define LMP_ATOM_VEC_SPH_SOIL_H
+
+#include "atom_vec.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+
+class AtomVecSPHSoil : public AtomVec {
+ public:
+  AtomVecSPHSoil(class LAMMPS *);
+
+  void process_args(int, char **) override;
+  void grow_pointers() override;
+  void force_clear(int, size_t) override;
+  void create_atom_post(int) override;
+  void data_atom_post(int) override;
+  int property_atom(char *) override;
+  void pack_property_atom(int, double *, int, int) override;
+
+  // Per-atom arrays owned by this style (registered with Atom::add_peratom).
+  // Tensors are stored in Voigt order xx, yy, zz, xy, xz, yz; in 2D (plane
+  // strain) xz and yz stay zero while zz is carried.
+  double *smoothing_length;    // h, kernel support is 2h
+  double **stress;             // Cauchy stress, positive in tension
+  double **stress_rate;        // d(stress)/dt of the last force evaluation
+  double **total_strain;       // accumulated total strain, integral of strain_rate dt
+  double **strain_rate;        // symmetric part of the velocity gradient
+  double **spin;               // antisymmetric part: xy, xz, yz
+  int *level;                  // refinement level, 0 for an original particle
+  double **wall_normal;        // unit normal into the soil for wall particles, else 0
+  double *wall_distance;       // distance of a wall particle behind the wall surface
+
+  // Core Atom arrays with the same meaning as in atom_style sph.
+  double *rmass, *rho, *drho, **vest;
+
+  static constexpr int NVOIGT = 6;
+  static constexpr int NSPIN = 3;
+
+ private:
+  void register_field(const char *name, void *address, int datatype, int cols);
+  std::string field_storage[12];
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

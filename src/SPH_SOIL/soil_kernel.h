@@ -1,0 +1,76 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package: the cubic spline kernel (Monaghan & Lattanzio 1985).
+
+   Pure functions, no LAMMPS dependency (SPEC section 1):
+     W(r,h) = C/h^D * (1 - 1.5 q^2 + 0.75 q^3)   for 0 <= q < 1
+            = C/h^D * 0.25 (2 - q)^3              for 1 <= q < 2
+            = 0                                   otherwise,      q = r/h
+   with C = 10/(7 pi) in 2D and 1/pi in 3D; support radius 2h.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SOIL_KERNEL_H
+#define LMP_SOIL_KERNEL_H
+
+#include <cmath>
+
+namespace SPHSoil {
+
+struct CubicSpline {
+  static constexpr double SUPPORT = 2.0;    // support radius in units of h
+
+  // normalisation C / h^D
+  static inline double norm(int dimension, double h)
+  {
+    constexpr double PI = 3.14159265358979323846;
+    return dimension == 3 ? 1.0 / (PI * h * h * h) : 10.0 / (7.0 * PI * h * h);
+  }
+
+  // W(r, h)
+  static inline double value(int dimension, double r, double h)
+  {
+    const double q = r / h;
+    if (q >= 2.0) return 0.0;
+    const double c = norm(dimension, h);
+    if (q < 1.0) return c * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
+    const double t = 2.0 - q;
+    return c * 0.25 * t * t * t;
+  }
+
+  // dW/dr (<= 0); the gradient is dW/dr * x/r.
+  static inline double derivative(int dimension, double r, double h)
+  {
+    const double q = r / h;
+    if (q >= 2.0) return 0.0;
+    const double c = norm(dimension, h) / h;
+    if (q < 1.0) return c * (-3.0 * q + 2.25 * q * q);
+    const double t = 2.0 - q;
+    return -c * 0.75 * t * t;
+  }
+
+  // (1/r) dW/dr, finite at r = 0 (where it tends to -3 C / h^(D+2)), so that
+  // grad W = x * gradient_factor(r, h) needs no division by r in the pair loop.
+  static inline double gradient_factor(int dimension, double r, double h)
+  {
+    const double q = r / h;
+    if (q >= 2.0) return 0.0;
+    const double c = norm(dimension, h) / (h * h);
+    if (q < 1.0) return c * (-3.0 + 2.25 * q);
+    const double t = 2.0 - q;
+    return -c * 0.75 * t * t / q;
+  }
+
+  // d2W/dr2, whose sign decides the tensile/compressive (Swegle) instability:
+  // negative for q < 2/3.
+  static inline double second_derivative(int dimension, double r, double h)
+  {
+    const double q = r / h;
+    if (q >= 2.0) return 0.0;
+    const double c = norm(dimension, h) / (h * h);
+    if (q < 1.0) return c * (-3.0 + 4.5 * q);
+    return c * 1.5 * (2.0 - q);
+  }
+};
+
+}    // namespace SPHSoil
+
+#endif

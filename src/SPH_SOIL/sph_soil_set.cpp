@@ -1,0 +1,186 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package for LAMMPS: command sph_soil/set
+------------------------------------------------------------------------- */
+
+#include "sph_soil_set.h"
+
+#include "atom.h"
+#include "atom_vec_sph_soil.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "group.h"
+#include "input.h"
+#include "utils.h"
+#include "variable.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+/* ---------------------------------------------------------------------- */
+
+void SPHSoilSet::command(int narg, char **arg)
+{
+  if (domain->box_exist == 0)
+    error->all(FLERR, "sph_soil/set command before simulation box is defined");
+  if (narg < 3) error->all(FLERR, "Illegal sph_soil/set command: expected 'sph_soil/set group-ID keyword value ...'");
+  auto avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  if (!avec) error->all(FLERR, "sph_soil/set command requires atom_style sph/soil");
+
+  const int igroup = group->find(arg[0]);
+  if (igroup == -1) error->all(FLERR, "Could not find sph_soil/set group ID {}", arg[0]);
+  const int groupbit = group->bitmask[igroup];
+
+  if (comm->me == 0) utils::logmesg(lmp, "Setting sph/soil atom values ...\n");
+
+  int iarg = 1;
+  while (iarg < narg) {
+    const std::string keyword = arg[iarg];
+    auto need = [&](int n) {
+      if (iarg + n >= narg)
+        error->all(FLERR, "Illegal sph_soil/set command: keyword {} needs {} value(s)", keyword, n);
+    };
+    const int nlocal = atom->nlocal;
+    const int *mask = atom->mask;
+    bigint count = 0;
+    for (int i = 0; i < nlocal; i++)
+      if (mask[i] & groupbit) count++;
+
+    if (keyword == "mass" || keyword == "h" || keyword == "density") {
+      need(1);
+      auto values = evaluate(parse_value(keyword, arg[iarg + 1]));
+      check_range(keyword, values, 0.0, true, "> 0", groupbit);
+      double *target = keyword == "mass" ? atom->rmass
+          : keyword == "h"              ? avec->smoothing_length
+                                        : atom->rho;
+      for (int i = 0; i < nlocal; i++)
+        if (mask[i] & groupbit) target[i] = values[i];
+      iarg += 2;
+    } else if (keyword == "level") {
+      need(1);
+      const int value = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (value < 0)
+        error->all(FLERR, "Illegal sph_soil/set level {}: the refinement level must be >= 0", value);
+      for (int i = 0; i < nlocal; i++)
+        if (mask[i] & groupbit) avec->level[i] = value;
+      iarg += 2;
+    } else if (keyword == "stress" || keyword == "strain") {
+      need(AtomVecSPHSoil::NVOIGT);
+      double **target = keyword == "stress" ? avec->stress : avec->total_strain;
+      for (int k = 0; k < AtomVecSPHSoil::NVOIGT; k++) {
+        auto values = evaluate(parse_value(keyword, arg[iarg + 1 + k]));
+        check_range(keyword, values, -HUGE_VAL, true, "finite", groupbit);
+        for (int i = 0; i < nlocal; i++)
+          if (mask[i] & groupbit) target[i][k] = values[i];
+      }
+      iarg += 1 + AtomVecSPHSoil::NVOIGT;
+    } else if (keyword == "wall") {
+      need(6);
+      double point[3], normal[3];
+      for (int k = 0; k < 3; k++) {
+        point[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
+        normal[k] = utils::numeric(FLERR, arg[iarg + 4 + k], false, lmp);
+      }
+      const double norm = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+      if (!(norm > 0.0))
+        error->all(FLERR, "Illegal sph_soil/set wall: the normal ({} {} {}) must be non-zero",
+                   normal[0], normal[1], normal[2]);
+      if (domain->dimension == 2 && normal[2] != 0.0)
+        error->all(FLERR, "Illegal sph_soil/set wall: the normal must lie in the xy plane in 2D");
+      for (int k = 0; k < 3; k++) normal[k] /= norm;
+      double **x = atom->x;
+      for (int i = 0; i < nlocal; i++) {
+        if (!(mask[i] & groupbit)) continue;
+        double behind = 0.0;
+        for (int k = 0; k < 3; k++) {
+          avec->wall_normal[i][k] = normal[k];
+          behind += (point[k] - x[i][k]) * normal[k];
+        }
+        avec->wall_distance[i] = behind;
+      }
+      iarg += 7;
+    } else if (keyword == "nowall") {
+      for (int i = 0; i < nlocal; i++) {
+        if (!(mask[i] & groupbit)) continue;
+        for (int k = 0; k < 3; k++) avec->wall_normal[i][k] = 0.0;
+        avec->wall_distance[i] = 0.0;
+      }
+      iarg += 1;
+    } else {
+      error->all(FLERR,
+                 "Illegal sph_soil/set command: unknown keyword {} (allowed: mass, h, density, "
+                 "level, stress, strain, wall, nowall)",
+                 keyword);
+    }
+
+    bigint total = 0;
+    MPI_Allreduce(&count, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (comm->me == 0) utils::logmesg(lmp, "  {} settings made for {}\n", total, keyword);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+SPHSoilSet::Value SPHSoilSet::parse_value(const std::string &keyword, const char *arg)
+{
+  Value value;
+  if (strncmp(arg, "v_", 2) == 0) {
+    value.variable = arg + 2;
+    const int ivar = input->variable->find(value.variable.c_str());
+    if (ivar < 0)
+      error->all(FLERR, "Variable name {} for sph_soil/set {} does not exist", value.variable, keyword);
+    if (!input->variable->equalstyle(ivar) && !input->variable->atomstyle(ivar))
+      error->all(FLERR, "Variable {} for sph_soil/set {} must be equal-style or atom-style",
+                 value.variable, keyword);
+  } else {
+    value.constant = utils::numeric(FLERR, arg, false, lmp);
+  }
+  return value;
+}
+
+/* ---------------------------------------------------------------------- */
+
+std::vector<double> SPHSoilSet::evaluate(const Value &value)
+{
+  const int nlocal = atom->nlocal;
+  std::vector<double> values(nlocal > 0 ? nlocal : 1, value.constant);
+  if (value.variable.empty()) return values;
+
+  const int ivar = input->variable->find(value.variable.c_str());
+  if (input->variable->atomstyle(ivar)) {
+    input->variable->compute_atom(ivar, 0, values.data(), 1, 0);
+  } else {
+    const double v = input->variable->compute_equal(ivar);
+    std::fill(values.begin(), values.end(), v);
+  }
+  return values;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHSoilSet::check_range(const std::string &keyword, const std::vector<double> &values,
+                             double lo, bool lo_open, const char *allowed, int groupbit)
+{
+  const int *mask = atom->mask;
+  // report the offending atom with the smallest ID, identically on every rank
+  tagint badid = MAXTAGINT;
+  double badvalue = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double v = values[i];
+    const bool ok = std::isfinite(v) && (lo_open ? v > lo : v >= lo);
+    if (!ok && atom->tag[i] < badid) {
+      badid = atom->tag[i];
+      badvalue = v;
+    }
+  }
+  tagint firstbad = MAXTAGINT;
+  MPI_Allreduce(&badid, &firstbad, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (firstbad == MAXTAGINT) return;
+  double mine = (badid == firstbad) ? badvalue : 0.0, reported = 0.0;
+  MPI_Allreduce(&mine, &reported, 1, MPI_DOUBLE, MPI_SUM, world);
+  error->all(FLERR, "Illegal sph_soil/set {} value {} for atom {}: must be {}", keyword, reported,
+             firstbad, allowed);
+}

@@ -1,0 +1,23 @@
+#!/bin/bash
+# Configure and build LAMMPS with the SPH_SOIL package (lmp, liblammps, tests, tools).
+# Installs missing Debian packages first; fetches Debian's LAMMPS source on first use.
+#
+#   tools/build.sh [extra cmake arguments, e.g. -DLAMMPS_SOURCE_DIR=/path/to/lammps]
+#
+# Environment: BUILD_DIR (default: build), JOBS (default: number of cores).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${BUILD_DIR:-$root/build}
+jobs=${JOBS:-$(nproc)}
+
+bash "$root/tools/setup_deps.sh"
+
+# ccache keyed on paths relative to the checkout: a fresh clone reuses earlier compilations.
+export CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=true
+
+if [ ! -f "$build/build.ninja" ] || [ $# -gt 0 ]; then
+  cmake -S "$root" -B "$build" -G Ninja "$@"
+fi
+start=$(date +%s)
+cmake --build "$build" -j "$jobs"
+echo "build: done in $(( $(date +%s) - start )) s; lmp is $build/lmp"

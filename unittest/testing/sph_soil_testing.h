@@ -1,0 +1,112 @@
+// Helpers shared by the SPH_SOIL tests that run LAMMPS in-process (1 or more MPI ranks).
+#ifndef SPH_SOIL_TESTING_H
+#define SPH_SOIL_TESTING_H
+
+#include "atom.h"
+#include "atom_vec_sph_soil.h"
+#include "core.h"
+#include "exceptions.h"
+
+#include <map>
+#include <mpi.h>
+#include <string>
+#include <vector>
+
+// Expect that the statements throw a LAMMPS error whose message matches `regex`, on every rank.
+// (LAMMPS's TEST_FAILURE reads the message from rank 0's screen; this reads the exception.)
+#define EXPECT_LAMMPS_ERROR(regex, ...)                                                   \
+  do {                                                                                    \
+    std::string sph_soil_message;                                                         \
+    bool sph_soil_thrown = false;                                                         \
+    ::testing::internal::CaptureStdout();                                                 \
+    try {                                                                                 \
+      __VA_ARGS__;                                                                        \
+    } catch (LAMMPS_NS::LAMMPSException & e) {                                            \
+      sph_soil_thrown = true;                                                             \
+      sph_soil_message = e.message;                                                       \
+    }                                                                                     \
+    auto sph_soil_output = ::testing::internal::GetCapturedStdout();                      \
+    EXPECT_TRUE(sph_soil_thrown) << "no LAMMPS error; output:\n" << sph_soil_output;      \
+    EXPECT_THAT(sph_soil_message, ::testing::MatchesRegex(regex));                        \
+  } while (0)
+
+namespace SphSoilTesting {
+
+inline int nprocs()
+{
+  int n;
+  MPI_Comm_size(MPI_COMM_WORLD, &n);
+  return n;
+}
+
+inline int rank()
+{
+  int r;
+  MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
+
+inline LAMMPS_NS::AtomVecSPHSoil *soil_avec(LAMMPS_NS::LAMMPS *lmp)
+{
+  return dynamic_cast<LAMMPS_NS::AtomVecSPHSoil *>(lmp->atom->style_match("sph/soil"));
+}
+
+// Every per-atom state value of atom_style sph/soil, in a fixed order, for atom i.
+// Order: type x(3) v(3) mass h rho level stress(6) strain(6) wall_normal(3) wall_distance vest(3)
+inline std::vector<double> atom_state(LAMMPS_NS::LAMMPS *lmp, int i)
+{
+  auto atom = lmp->atom;
+  auto avec = soil_avec(lmp);
+  std::vector<double> s;
+  s.push_back(atom->type[i]);
+  for (int k = 0; k < 3; k++) s.push_back(atom->x[i][k]);
+  for (int k = 0; k < 3; k++) s.push_back(atom->v[i][k]);
+  s.push_back(atom->rmass[i]);
+  s.push_back(avec->smoothing_length[i]);
+  s.push_back(atom->rho[i]);
+  s.push_back(avec->level[i]);
+  for (int k = 0; k < 6; k++) s.push_back(avec->stress[i][k]);
+  for (int k = 0; k < 6; k++) s.push_back(avec->total_strain[i][k]);
+  for (int k = 0; k < 3; k++) s.push_back(avec->wall_normal[i][k]);
+  s.push_back(avec->wall_distance[i]);
+  for (int k = 0; k < 3; k++) s.push_back(atom->vest[i][k]);
+  return s;
+}
+inline const std::vector<std::string> &state_names()
+{
+  static const std::vector<std::string> names = {
+      "type", "x", "y", "z", "vx", "vy", "vz", "mass", "h", "rho", "level",
+      "sxx", "syy", "szz", "sxy", "sxz", "syz", "exx", "eyy", "ezz", "exy", "exz", "eyz",
+      "wall_nx", "wall_ny", "wall_nz", "wall_d", "vestx", "vesty", "vestz"};
+  return names;
+}
+
+// The state of all atoms on all ranks, keyed by atom ID (identical on every rank).
+inline std::map<LAMMPS_NS::tagint, std::vector<double>> gather_state(LAMMPS_NS::LAMMPS *lmp)
+{
+  const int nvalues = state_names().size();
+  const int nlocal = lmp->atom->nlocal;
+  std::vector<double> mine;
+  for (int i = 0; i < nlocal; i++) {
+    mine.push_back(lmp->atom->tag[i]);
+    auto s = atom_state(lmp, i);
+    mine.insert(mine.end(), s.begin(), s.end());
+  }
+  const int n = nprocs();
+  int count = mine.size();
+  std::vector<int> counts(n), displs(n, 0);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (int r = 1; r < n; r++) displs[r] = displs[r - 1] + counts[r - 1];
+  std::vector<double> all(displs[n - 1] + counts[n - 1] + 1);
+  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, MPI_COMM_WORLD);
+  std::map<LAMMPS_NS::tagint, std::vector<double>> state;
+  const size_t total = displs[n - 1] + counts[n - 1];
+  for (size_t k = 0; k < total; k += nvalues + 1)
+    state[(LAMMPS_NS::tagint) all[k]] = std::vector<double>(all.begin() + k + 1, all.begin() + k + 1 + nvalues);
+  return state;
+}
+
+}    // namespace SphSoilTesting
+
+#endif
