@@ -4,7 +4,9 @@
 #
 #   tools/build.sh [extra cmake arguments, e.g. -DLAMMPS_SOURCE_DIR=/path/to/lammps]
 #
-# Environment: BUILD_DIR (default: build), JOBS (default: number of cores).
+# Environment: BUILD_DIR (default: build), JOBS (default: number of cores),
+#   SPH_SOIL_CACHE_DIR (where the fetched LAMMPS source is kept, default ~/.cache/sph_soil),
+#   LAMMPS_SOURCE_DIR (use this LAMMPS tree instead of fetching one).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${BUILD_DIR:-$root/build}
@@ -15,8 +17,11 @@ bash "$root/tools/setup_deps.sh"
 # ccache keyed on paths relative to the checkout: a fresh clone reuses earlier compilations.
 export CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=true
 
-if [ ! -f "$build/build.ninja" ] || [ $# -gt 0 ]; then
-  cmake -S "$root" -B "$build" -G Ninja "$@"
+args=("$@")
+[ -n "${SPH_SOIL_CACHE_DIR:-}" ] && args+=("-DSPH_SOIL_CACHE_DIR=$SPH_SOIL_CACHE_DIR")
+[ -n "${LAMMPS_SOURCE_DIR:-}" ] && args+=("-DLAMMPS_SOURCE_DIR=$LAMMPS_SOURCE_DIR")
+if [ ! -f "$build/build.ninja" ] || [ ${#args[@]} -gt 0 ]; then
+  cmake -S "$root" -B "$build" -G Ninja "${args[@]}"
 fi
 start=$(date +%s)
 cmake --build "$build" -j "$jobs"
