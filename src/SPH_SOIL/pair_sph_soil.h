@@ -1,0 +1,67 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package for LAMMPS: pair_style sph/soil
+
+   One loop over a full neighbour list computes, for every soil particle,
+   the density rate (continuity), the acceleration (momentum with Monaghan
+   artificial viscosity) and the velocity gradient split into strain rate
+   and spin (Bui et al. 2008; SPEC.md section 2). Wall particles are
+   Morris-type ghosts with Bui's no-slip (or free-slip) treatment.
+   The stress update lives in fix sph/soil. See doc/pair_sph_soil.rst.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(sph/soil,PairSPHSoil);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_SPH_SOIL_H
+#define LMP_PAIR_SPH_SOIL_H
+
+#include "pair.h"
+#include "soil_constitutive.h"
+#include "soil_material.h"
+
+#include <memory>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class PairSPHSoil : public Pair {
+ public:
+  PairSPHSoil(class LAMMPS *);
+  ~PairSPHSoil() override;
+
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void *extract(const char *, int &) override;
+
+  // for fix sph/soil and the computes
+  const SPHSoil::SoilMaterial &material(int type) const { return materials[type]; }
+  bool is_wall_type(int type) const { return materials[type].wall; }
+  // constitutive model of a soil type, nullptr for wall types and types without material
+  const SPHSoil::ConstitutiveModel *model(int type) const { return models[type].get(); }
+  double max_wave_speed() const;
+
+ protected:
+  double viscosity_alpha, viscosity_beta;    // Monaghan artificial viscosity
+  bool free_slip;                            // walls: reverse only the normal velocity
+  std::vector<SPHSoil::SoilMaterial> materials;    // per atom type, index 1..ntypes
+  std::vector<int> type_set;                       // 1 once pair_coeff gave the type a material
+  double **sound_speed_ij;                         // mean P-wave speed of a type pair
+  double max_h;                                    // largest smoothing length at init
+  std::vector<std::unique_ptr<SPHSoil::ConstitutiveModel>> models;    // per atom type
+
+  void allocate();
+  void set_type_material(int type, const SPHSoil::SoilMaterial &material);
+  void read_material_file(const char *file, std::vector<SPHSoil::SoilMaterial> &list);
+  template <int DIMENSION> void eval();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

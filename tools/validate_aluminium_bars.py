@@ -1,0 +1,166 @@
+#!/usr/bin/python3
+"""Compare a simulated aluminium-bar collapse with Bui et al. 2008's measurements.
+
+Reads the LAMMPS dumps of examples/aluminium_bars (dump.initial: id type x y; dump.final:
+id type x y ...), computes
+  - the final free-surface profile: at each measured x, the top of the particles within one
+    spacing of it (highest centre + d/2), and its RMS difference from the measured surface;
+  - the runout: the furthest x at which the surface is higher than 2 mm;
+  - the failure line: the upper boundary of the soil that moved less than 1.5 mm (per column
+    of width d, the top of the unmoved particles), and its angle from a straight-line fit
+    over the columns where the boundary lies between 5% and 95% of the initial height;
+prints a JSON summary and writes a PNG plot of simulation vs experiment.
+
+  tools/validate_aluminium_bars.py --dir examples/aluminium_bars [--spacing 0.002]
+"""
+import argparse
+import json
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+
+def read_dump(path):
+    """Last snapshot of a LAMMPS text dump as a dict of column name -> numpy array."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    start = max(i for i, l in enumerate(lines) if l.startswith('ITEM: ATOMS'))
+    names = lines[start].split()[2:]
+    rows = [l.split() for l in lines[start + 1:] if l.strip() and not l.startswith('ITEM')]
+    data = np.array(rows, dtype=float).reshape(-1, len(names))
+    return {n: data[:, k] for k, n in enumerate(names)}
+
+
+def read_csv(path):
+    return np.loadtxt(path, delimiter=',', skiprows=1)
+
+
+def surface_height(x, y, at, spacing):
+    """Top of the particles within one spacing of each position (0 where there are none)."""
+    heights = np.zeros(len(at))
+    for k, xa in enumerate(at):
+        near = np.abs(x - xa) <= spacing
+        heights[k] = y[near].max() + 0.5 * spacing if near.any() else 0.0
+    return heights
+
+
+def runout(x, y, spacing, threshold=0.002):
+    """Furthest x (particle edge) whose column still stands higher than the threshold."""
+    edges = np.arange(0.0, x.max() + 2 * spacing, spacing)
+    top = surface_height(x, y, edges, 0.5 * spacing)
+    high = edges[top > threshold]
+    return float(high.max() + 0.5 * spacing) if len(high) else 0.0
+
+
+def failure_line(x0, y0, moved, spacing, height):
+    """Per column, the top of the particles that moved less than the threshold."""
+    columns = np.arange(x0.min(), x0.max() + 0.5 * spacing, spacing)
+    xs, ys = [], []
+    for xc in columns:
+        col = np.abs(x0 - xc) < 0.5 * spacing
+        still = col & ~moved
+        if not col.any():
+            continue
+        top = y0[still].max() + 0.5 * spacing if still.any() else 0.0
+        xs.append(xc)
+        ys.append(top)
+    xs, ys = np.array(xs), np.array(ys)
+    fit = (ys > 0.05 * height) & (ys < 0.95 * height)
+    angle = float('nan')
+    if fit.sum() >= 2:
+        slope = np.polyfit(xs[fit], ys[fit], 1)[0]
+        angle = math.degrees(math.atan(-slope))
+    return xs, ys, angle
+
+
+def wall_seconds(directory):
+    for name in sorted(os.listdir(directory)):
+        if name.startswith('log.'):
+            text = open(os.path.join(directory, name)).read()
+            m = re.findall(r'Total wall time: (\d+):(\d+):(\d+)', text)
+            if m:
+                h, mi, s = (int(v) for v in m[-1])
+                return h * 3600 + mi * 60 + s
+    return None
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument('--dir', default='examples/aluminium_bars', help='directory with dump.initial, dump.final')
+    p.add_argument('--spacing', type=float, default=None, help='particle spacing d (default: from the dump)')
+    p.add_argument('--experiment', default=None, help='directory with surface.csv and failure.csv')
+    p.add_argument('--moved', type=float, default=0.0015, help='displacement that counts as moved (m)')
+    p.add_argument('--height', type=float, default=0.1, help='initial height of the block (m)')
+    p.add_argument('--json', default=None, help='write the summary here too')
+    p.add_argument('--plot', default=None, help='PNG plot (default: <dir>/validation.png)')
+    p.add_argument('--wall-seconds', type=float, default=None, help='wall time of the run')
+    a = p.parse_args()
+
+    exp_dir = a.experiment or os.path.join(a.dir, 'experiment')
+    surface_exp = read_csv(os.path.join(exp_dir, 'surface.csv'))
+    failure_exp = read_csv(os.path.join(exp_dir, 'failure.csv'))
+    initial = read_dump(os.path.join(a.dir, 'dump.initial'))
+    final = read_dump(os.path.join(a.dir, 'dump.final'))
+
+    order0 = np.argsort(initial['id'])
+    order1 = np.argsort(final['id'])
+    if not np.array_equal(initial['id'][order0], final['id'][order1]):
+        sys.exit('validate: dump.initial and dump.final hold different particles')
+    x0, y0 = initial['x'][order0], initial['y'][order0]
+    x1, y1 = final['x'][order1], final['y'][order1]
+    spacing = a.spacing or float(np.min(np.diff(np.unique(np.round(x0, 9)))))
+
+    sim_surface = surface_height(x1, y1, surface_exp[:, 0], spacing)
+    surface_rms = float(np.sqrt(np.mean((sim_surface - surface_exp[:, 1]) ** 2)))
+    run = runout(x1, y1, spacing)
+    moved = np.hypot(x1 - x0, y1 - y0) >= a.moved
+    fx, fy, angle = failure_line(x0, y0, moved, spacing, a.height)
+    exp_slope = np.polyfit(failure_exp[:, 0], failure_exp[:, 1], 1)[0]
+    exp_angle = math.degrees(math.atan(-exp_slope))
+
+    summary = {
+        'particles': int(len(x1)),
+        'spacing_m': spacing,
+        'surface_rms_m': round(surface_rms, 6),
+        'runout_m': round(run, 5),
+        'runout_experiment_m': 0.43,
+        'failure_angle_deg': round(angle, 2),
+        'failure_angle_experiment_deg': round(exp_angle, 2),
+        'wall_seconds': a.wall_seconds if a.wall_seconds is not None else wall_seconds(a.dir),
+    }
+    text = json.dumps(summary, indent=2)
+    print(text)
+    if a.json:
+        with open(a.json, 'w') as f:
+            f.write(text + '\n')
+
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(9, 3.6))
+    ax.scatter(x1, y1, s=1.0, c='0.75', label='particles (final)', rasterized=True)
+    xs = np.linspace(0, x1.max(), 400)
+    ax.plot(xs, surface_height(x1, y1, xs, spacing), 'b-', lw=1.2, label='simulated surface')
+    ax.plot(surface_exp[:, 0], surface_exp[:, 1], 'ko', ms=4, label='measured surface')
+    ax.plot(fx, fy, 'r-', lw=1.2, label=f'simulated failure line ({angle:.1f} deg)')
+    ax.plot(failure_exp[:, 0], failure_exp[:, 1], 'rs', ms=4, mfc='none',
+            label=f'measured failure line ({exp_angle:.1f} deg)')
+    ax.set_xlabel('x (m)')
+    ax.set_ylabel('height (m)')
+    ax.set_aspect('equal')
+    ax.set_xlim(0, max(0.5, x1.max() + 0.01))
+    ax.set_ylim(0, 0.11)
+    ax.set_title(f'Aluminium bars, d = {spacing * 1000:.3g} mm: surface RMS {surface_rms * 1000:.1f} mm, '
+                 f'runout {run:.3f} m')
+    ax.legend(fontsize=7, loc='upper right')
+    fig.tight_layout()
+    out = a.plot or os.path.join(a.dir, 'validation.png')
+    fig.savefig(out, dpi=150)
+    print(f'validate: plot written to {out}', file=sys.stderr)
+
+
+if __name__ == '__main__':
+    main()

@@ -1,0 +1,288 @@
+// pair_style sph/soil + fix sph/soil in LAMMPS: conservation, geostatic equilibrium, rank
+// independence, and error messages for bad input.
+#include "sph_soil_testing.h"
+
+#include "comm.h"
+#include "domain.h"
+#include "fix.h"
+#include "force.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cmath>
+
+using namespace LAMMPS_NS;
+using namespace SphSoilTesting;
+
+namespace {
+
+class SoilPhysics : public LAMMPSTest {
+ protected:
+  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
+
+  // sums over all atoms: mass, momentum (3), positions x mass (3), kinetic energy
+  std::vector<double> totals()
+  {
+    std::vector<double> local(8, 0.0), global(8, 0.0);
+    auto atom = lmp->atom;
+    for (int i = 0; i < atom->nlocal; i++) {
+      const double m = atom->rmass[i];
+      local[0] += m;
+      for (int k = 0; k < 3; k++) {
+        local[1 + k] += m * atom->v[i][k];
+        local[4 + k] += m * atom->x[i][k];
+      }
+      local[7] += 0.5 * m * (atom->v[i][0] * atom->v[i][0] + atom->v[i][1] * atom->v[i][1] +
+                             atom->v[i][2] * atom->v[i][2]);
+    }
+    MPI_Allreduce(local.data(), global.data(), 8, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return global;
+  }
+
+  // A periodic 2D patch of soil with varying velocities and stresses: no walls, no gravity.
+  void periodic_patch()
+  {
+    HIDE_OUTPUT([&] {
+      command("dimension 2");
+      command("boundary p p p");
+      command("atom_style sph/soil");
+      command("atom_modify map array");
+      command("lattice sq 0.01");
+      command("region box block 0 20 0 16 -0.5 0.5");
+      command("create_box 1 box");
+      command("create_atoms 1 box");
+      // a disordered lattice (atom IDs depend on the number of ranks, positions do not)
+      command("variable xnew atom x+0.001*sin(1299*x+7823*y)");
+      command("variable ynew atom y+0.001*sin(3711*x-4557*y)");
+      command("set group all x v_xnew y v_ynew");
+      command("variable sxx atom -2000.0-300.0*sin(300*x)");
+      command("variable syy atom -1500.0+200.0*cos(250*y)");
+      command("variable sxy atom 100.0*sin(200*(x+y))");
+      command("sph_soil/set all mass 0.265 h 0.012 density 2650 stress v_sxx v_syy v_sxx v_sxy 0 0");
+      command("velocity all set v_vx NULL NULL units box");
+    });
+  }
+
+  void soil_run_setup()
+  {
+    HIDE_OUTPUT([&] {
+      command("pair_style sph/soil");
+      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
+      command("fix integrate all sph/soil");
+      command("timestep 2.0e-5");
+      command("neighbor 0.002 bin");
+      command("thermo 0");
+    });
+  }
+};
+
+}    // namespace
+
+TEST_F(SoilPhysics, PeriodicPatchConservesMassAndMomentum)
+{
+  HIDE_OUTPUT([&] { command("variable vx atom 0.02*sin(2*PI*y/0.16)"); });
+  periodic_patch();
+  soil_run_setup();
+  auto before = totals();
+  HIDE_OUTPUT([&] { command("run 1000 post no"); });
+  auto after = totals();
+  EXPECT_EQ(after[0], before[0]);
+  // momentum: the pair sums are antisymmetric in i, j; only round-off may change the total
+  const double scale = before[0] * 0.02;
+  for (int k = 1; k <= 3; k++) EXPECT_NEAR(after[k], before[k], 1e-12 * scale) << "component " << k;
+}
+
+TEST_F(SoilPhysics, SameResultOnOneAndTwoRanks)
+{
+  // the run on all ranks against the same run on rank 0 alone (MPI_COMM_SELF), both
+  // from one data file so that atom IDs agree
+  HIDE_OUTPUT([&] { command("variable vx atom 0.02*sin(2*PI*y/0.16)"); });
+  periodic_patch();
+  const std::vector<std::string> read = {"units si", "dimension 2", "atom_style sph/soil",
+                                         "atom_modify map array", "read_data patch.data"};
+  HIDE_OUTPUT([&] {
+    command("write_data patch.data");
+    command("clear");
+    for (const auto &line : read) command(line);
+  });
+  soil_run_setup();
+  HIDE_OUTPUT([&] { command("run 200 post no"); });
+  auto parallel = gather_state(lmp);
+
+  std::map<tagint, std::vector<double>> serial;
+  if (rank() == 0) {
+    const char *argv[] = {"serial", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
+    auto single = new LAMMPS(8, (char **) argv, MPI_COMM_SELF);
+    for (const auto &line : read) single->input->one(line);
+    std::swap(single, lmp);
+    soil_run_setup();
+    command("run 200 post no");
+    std::swap(single, lmp);
+    // on a 1-rank instance the local atoms are all atoms
+    for (int i = 0; i < single->atom->nlocal; i++) serial[single->atom->tag[i]] = atom_state(single, i);
+    delete single;
+  }
+  if (rank() != 0) return;
+  ASSERT_EQ(serial.size(), parallel.size());
+  for (const auto &entry : serial) {
+    const auto &p = parallel.at(entry.first);
+    for (int k = 1; k <= 2; k++)
+      EXPECT_NEAR(p[k], entry.second[k], 1e-10 * std::fabs(entry.second[k]) + 1e-15)
+          << "atom " << entry.first << " coordinate " << k;
+  }
+}
+
+TEST_F(SoilPhysics, GeostaticColumnStaysAtRest)
+{
+  // a 0.1 m x 0.1 m column in a walled box, K0 initial stress, gravity
+  HIDE_OUTPUT([&] {
+    command("dimension 2");
+    command("boundary f f p");
+    command("atom_style sph/soil");
+    command("lattice sq 0.004 origin 0.5 0.5 0");
+    command("region box block -0.02 0.12 -0.02 0.14 -0.001 0.001 units box");
+    command("create_box 2 box");
+    command("region soil block 0 0.1 0 0.1 INF INF units box");
+    command("region floor block -0.012 0.112 -0.012 0 INF INF units box");
+    command("region left block -0.012 0 0 0.12 INF INF units box");
+    command("region right block 0.1 0.112 0 0.12 INF INF units box");
+    command("create_atoms 1 region soil");
+    command("create_atoms 2 region floor");
+    command("create_atoms 2 region left");
+    command("create_atoms 2 region right");
+    command("group soil type 1");
+    command("group floor region floor");
+    command("group left region left");
+    command("group right region right");
+    command("variable syy atom 1850*9.81*(y-0.1)");
+    command("variable sxx atom 0.3*v_syy");
+    command("sph_soil/set all mass $(1850*0.004*0.004) h 0.0048 density 1850");
+    command("sph_soil/set soil stress v_sxx v_syy v_sxx 0 0 0");
+    command("sph_soil/set floor wall 0 0 0 0 1 0");
+    command("sph_soil/set left wall 0 0 0 1 0 0");
+    command("sph_soil/set right wall 0.1 0 0 -1 0 0");
+    command("pair_style sph/soil");
+    command("pair_coeff 1 1 soil 1850 1.5e6 0.3 45 0 0");
+    command("pair_coeff 2 2 wall");
+    command("fix gravity soil gravity 9.81 vector 0 -1 0");
+    command("fix integrate soil sph/soil");
+    command("timestep 1.0e-5");
+    command("thermo 0");
+    command("run 10000 post no");
+  });
+  // at rest: velocities far below the free-fall speed over one particle, sqrt(2 g d) = 0.28 m/s
+  auto state = gather_state(lmp);
+  double vmax = 0.0;
+  double sy = 0, syy = 0, ss = 0, sys = 0, n = 0;    // least-squares fit of sigma_yy(y)
+  for (const auto &entry : state) {
+    const auto &s = entry.second;
+    if (s[0] != 1) continue;
+    vmax = std::max(vmax, std::sqrt(s[4] * s[4] + s[5] * s[5]));
+    const double y = s[2], stress = s[12];
+    sy += y;
+    syy += y * y;
+    ss += stress;
+    sys += y * stress;
+    n += 1;
+  }
+  EXPECT_LT(vmax, 5.0e-3);
+  const double slope = (n * sys - sy * ss) / (n * syy - sy * sy);
+  const double base = (ss - slope * sy) / n;
+  // vertical stress at the base (the fit at y = 0) within 2% of rho g H
+  const double expected = -1850 * 9.81 * 0.1;
+  EXPECT_NEAR(base, expected, 0.02 * std::fabs(expected));
+  EXPECT_NEAR(slope, 1850 * 9.81, 0.03 * 1850 * 9.81);
+}
+
+TEST_F(SoilPhysics, BadPairInput)
+{
+  HIDE_OUTPUT([&] {
+    command("dimension 2");
+    command("atom_style sph/soil");
+    command("region box block 0 1 0 1 -0.5 0.5");
+    command("create_box 2 box");
+    command("pair_style sph/soil");
+  });
+  EXPECT_LAMMPS_ERROR(".*pair_coeff sph/soil: material of type\\(s\\) 1: 'soil' needs 6 parameters "
+                      "\\(rho0 K nu phi psi c\\), got 5.*",
+                      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0"));
+  EXPECT_LAMMPS_ERROR(".*bulk modulus -1 must be > 0.*", command("pair_coeff 1 1 soil 2650 -1 0.3 19.8 0 0"));
+  EXPECT_LAMMPS_ERROR(".*Poisson ratio 0.5 must be in \\(-1, 0.5\\).*",
+                      command("pair_coeff 1 1 soil 2650 0.7e6 0.5 19.8 0 0"));
+  EXPECT_LAMMPS_ERROR(".*Poisson ratio -1 must be in \\(-1, 0.5\\).*",
+                      command("pair_coeff 1 1 soil 2650 0.7e6 -1 19.8 0 0"));
+  EXPECT_LAMMPS_ERROR(".*friction angle 90 must be in \\[0, 90\\) degrees.*",
+                      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 90 0 0"));
+  EXPECT_LAMMPS_ERROR(".*friction angle -5 must be in \\[0, 90\\) degrees.*",
+                      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 -5 0 0"));
+  EXPECT_LAMMPS_ERROR(".*both type arguments must be the same \\(got 1 2\\).*",
+                      command("pair_coeff 1 2 soil 2650 0.7e6 0.3 19.8 0 0"));
+  EXPECT_LAMMPS_ERROR(".*'wall' takes no parameters, got 1.*", command("pair_coeff 2 2 wall 3"));
+  EXPECT_LAMMPS_ERROR(".*a material file needs one name \\(or NULL\\) per atom type, 2 expected, 1 given.*",
+                      command("pair_coeff * * bui2008.soil sand"));
+  EXPECT_LAMMPS_ERROR(".*material granite for atom type 1 is not in file bui2008.soil.*",
+                      command("pair_coeff * * bui2008.soil granite wall"));
+  EXPECT_LAMMPS_ERROR(".*Cannot open material file nosuchfile.soil for pair_coeff sph/soil.*",
+                      command("pair_coeff * * nosuchfile.soil sand wall"));
+  EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil keyword gamma \\(allowed: alpha, beta, wall\\).*",
+                      command("pair_style sph/soil gamma 1"));
+  EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil alpha -1: must be >= 0.*",
+                      command("pair_style sph/soil alpha -1"));
+  EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil wall sticky: must be noslip or freeslip.*",
+                      command("pair_style sph/soil wall sticky"));
+}
+
+TEST_F(SoilPhysics, BadRunSetups)
+{
+  HIDE_OUTPUT([&] {
+    command("dimension 2");
+    command("atom_style sph/soil");
+    command("lattice sq 0.01");
+    command("region box block 0 10 0 10 -0.5 0.5");
+    command("create_box 1 box");
+    command("create_atoms 1 box");
+    command("pair_style sph/soil");
+    command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
+    command("fix integrate all sph/soil");
+  });
+  EXPECT_LAMMPS_ERROR(".*Pair sph/soil: atom 1 has smoothing length h <= 0; set it with "
+                      "'sph_soil/set <group> h <value>'.*",
+                      command("run 0 post no"));
+  HIDE_OUTPUT([&] {
+    command("sph_soil/set all h 0.012 density 2650 mass 0.265");
+    command("timestep 1.0e-3");
+  });
+  EXPECT_LAMMPS_ERROR(".*Fix sph/soil: timestep 0.001 exceeds the stability limit .* = 0.2 \\* "
+                      "min\\(h\\) / c_p; use a smaller timestep or 'cfl 0.1'.*",
+                      command("run 0 post no"));
+  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil cfl 2: must be in \\(0, 1\\].*",
+                      command("fix bad all sph/soil cfl 2"));
+}
+
+TEST_F(SoilPhysics, IntegratingAnotherAtomStyleIsAnError)
+{
+  HIDE_OUTPUT([&] {
+    command("atom_style atomic");
+    command("region box block 0 1 0 1 0 1");
+    command("create_box 1 box");
+  });
+  EXPECT_LAMMPS_ERROR(".*Fix sph/soil requires atom_style sph/soil.*", command("fix f all sph/soil"));
+  EXPECT_LAMMPS_ERROR(".*Compute sph/soil/atom requires atom_style sph/soil.*",
+                      command("compute c all sph/soil/atom"));
+}
+
+TEST_F(SoilPhysics, AdaptiveTimestepFollowsSmallestH)
+{
+  HIDE_OUTPUT([&] { command("variable vx atom 0.0"); });
+  periodic_patch();
+  soil_run_setup();
+  HIDE_OUTPUT([&] {
+    command("unfix integrate");
+    command("fix integrate all sph/soil cfl 0.1");
+    command("run 10 post no");
+  });
+  // c_p = sqrt((K + 4G/3)/rho0), K = 0.7e6, G = 3K(1-2nu)/(2(1+nu))
+  const double K = 0.7e6, nu = 0.3, G = 3 * K * (1 - 2 * nu) / (2 * (1 + nu));
+  const double c = std::sqrt((K + 4 * G / 3) / 2650);
+  EXPECT_NEAR(lmp->update->dt, 0.1 * 0.012 / c, 1e-15);
+}
