@@ -1,0 +1,139 @@
+#!/usr/bin/python3
+"""Run an example in its short mode and compare its thermo output with a reference log.
+
+    tools/regression.py --lmp build/lmp --example aluminium_bars --np 2 [--mpirun mpirun]
+    tools/regression.py ... --update      # (re)write the reference log instead
+
+The example runs in a scratch directory (--workdir) as
+    mpirun -np N lmp -in examples/NAME/in.NAME -var short 1 [extra -var settings]
+and the last thermo table of its log is compared with the one in the reference log
+examples/NAME/log.<tag>.NAME.short.<np> (the newest matching file). This is what LAMMPS's own
+regression tester does with its examples' log.* files.
+
+Tolerance (stated here and in doc/): for every column and row, |new - ref| <= rtol |ref| + atol
+with rtol = 1e-6 and atol = 1e-12 times the column's largest |ref|; columns whose reference
+values are all integers and that are counts (not 'Step' or 'Atoms') may differ by 1% + 2, since
+whether a particle sits exactly on the yield surface can flip at round-off between MPI layouts.
+'Step' and 'Atoms' must match exactly.
+"""
+import argparse
+import glob
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+RTOL = 1.0e-6
+ATOL = 1.0e-12
+
+
+def thermo_table(path):
+    """The last thermo table of a LAMMPS log: (column names, rows of floats)."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    header, rows, tables = None, [], []
+    for line in lines:
+        words = line.split()
+        if words and words[0] == 'Step':
+            header, rows = words, []
+            continue
+        if header is not None:
+            if line.startswith('Loop time'):
+                tables.append((header, rows))
+                header = None
+                continue
+            try:
+                values = [float(w) for w in words]
+            except ValueError:
+                continue
+            if len(values) == len(header):
+                rows.append(values)
+    if header is not None and rows:
+        tables.append((header, rows))
+    if not tables:
+        raise SystemExit(f'regression: no thermo table in {path}')
+    return tables[-1]
+
+
+def compare(ref, new):
+    (rh, rrows), (nh, nrows) = ref, new
+    problems = []
+    if rh != nh:
+        return [f'columns differ: reference {rh}, new {nh}']
+    if len(rrows) != len(nrows):
+        return [f'{len(nrows)} thermo rows, reference has {len(rrows)}']
+    for c, name in enumerate(rh):
+        ref_col = [r[c] for r in rrows]
+        new_col = [r[c] for r in nrows]
+        scale = max(abs(v) for v in ref_col) or 1.0
+        exact = name in ('Step', 'Atoms')
+        count = not exact and all(float(v).is_integer() for v in ref_col) and name.startswith(('f_', 'c_', 'v_'))
+        for k, (a, b) in enumerate(zip(ref_col, new_col)):
+            if exact:
+                ok = a == b
+            elif count:
+                ok = abs(a - b) <= 0.01 * abs(a) + 2
+            else:
+                ok = abs(a - b) <= RTOL * abs(a) + ATOL * scale
+            if not ok:
+                problems.append(f'row {k} column {name}: reference {a!r}, new {b!r}')
+    return problems
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument('--lmp', required=True)
+    p.add_argument('--example', required=True)
+    p.add_argument('--np', type=int, default=1)
+    p.add_argument('--mpirun', default='mpirun')
+    p.add_argument('--workdir', default=None)
+    p.add_argument('--var', action='append', default=[], help='extra NAME=VALUE input variables')
+    p.add_argument('--update', action='store_true', help='write the reference log instead of comparing')
+    a = p.parse_args()
+
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    exdir = os.path.join(root, 'examples', a.example)
+    infile = os.path.join(exdir, f'in.{a.example}')
+    work = a.workdir or os.path.join(os.getcwd(), f'regression_{a.example}_np{a.np}')
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    cmd = [a.mpirun, '-np', str(a.np), os.path.abspath(a.lmp), '-in', infile, '-var', 'short', '1',
+           '-log', 'log.short', '-screen', 'none']
+    for v in a.var:
+        name, value = v.split('=', 1)
+        cmd += ['-var', name, value]
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
+    start = time.time()
+    run = subprocess.run(cmd, cwd=work, env=env)
+    if run.returncode != 0:
+        log = os.path.join(work, 'log.short')
+        if os.path.exists(log):
+            sys.stdout.write(''.join(open(log).readlines()[-20:]))
+        raise SystemExit(f'regression: {" ".join(cmd)} failed with exit code {run.returncode}')
+    print(f'regression: {a.example} short run on {a.np} rank(s) took {time.time() - start:.1f} s')
+    new = thermo_table(os.path.join(work, 'log.short'))
+
+    if a.update:
+        stamp = time.strftime('%d%b%y')
+        for old in glob.glob(os.path.join(exdir, f'log.*.{a.example}.short.{a.np}')):
+            os.remove(old)
+        target = os.path.join(exdir, f'log.{stamp}.{a.example}.short.{a.np}')
+        shutil.copy(os.path.join(work, 'log.short'), target)
+        print(f'regression: reference written to {target}')
+        return
+    refs = sorted(glob.glob(os.path.join(exdir, f'log.*.{a.example}.short.{a.np}')), key=os.path.getmtime)
+    if not refs:
+        raise SystemExit(f'regression: no reference log examples/{a.example}/log.*.{a.example}.short.{a.np}')
+    problems = compare(thermo_table(refs[-1]), new)
+    if problems:
+        print(f'regression: {a.example} np {a.np} differs from {os.path.basename(refs[-1])}:')
+        for line in problems[:20]:
+            print('  ' + line)
+        raise SystemExit(1)
+    print(f'regression: {a.example} np {a.np} matches {os.path.basename(refs[-1])} '
+          f'({len(new[1])} rows x {len(new[0])} columns, rtol {RTOL})')
+
+
+if __name__ == '__main__':
+    main()
