@@ -132,6 +132,115 @@ TEST_F(SoilPhysics, SameResultOnOneAndTwoRanks)
   }
 }
 
+TEST_F(SoilPhysics, RestartAndSplitRunsContinueIdentically)
+{
+  // uninterrupted: run 200; split: run 100, write_restart, new instance, read_restart, run 100
+  HIDE_OUTPUT([&] { command("variable vx atom 0.02*sin(2*PI*y/0.16)"); });
+  periodic_patch();
+  soil_run_setup();
+  HIDE_OUTPUT([&] {
+    command("run 100 post no");
+    command("write_restart patch.restart");
+    command("run 100 post no");
+  });
+  auto uninterrupted = gather_state(lmp);
+  HIDE_OUTPUT([&] {
+    command("clear");
+    command("read_restart patch.restart");
+    command("pair_style sph/soil");
+    command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
+    command("fix integrate all sph/soil");
+    command("neighbor 0.002 bin");
+    command("run 50 post no");
+    command("run 50 post no");    // a second split, inside one instance
+  });
+  auto restarted = gather_state(lmp);
+  ASSERT_EQ(restarted.size(), uninterrupted.size());
+  const auto &names = state_names();
+  for (const auto &entry : uninterrupted) {
+    const auto &r = restarted.at(entry.first);
+    for (size_t k = 1; k < 27; k++)
+      EXPECT_NEAR(r[k], entry.second[k], 1e-12 * std::fabs(entry.second[k]) + 1e-18)
+          << "atom " << entry.first << " " << names[k];
+  }
+}
+
+namespace {
+// total energy of an elastic patch: kinetic + sum of V_i (J2/(2G) + I1^2/(18K))
+double elastic_total_energy(LAMMPS *lmp, double bulk, double shear)
+{
+  auto atom = lmp->atom;
+  auto avec = soil_avec(lmp);
+  double local = 0.0, total = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double *v = atom->v[i], *s = avec->stress[i];
+    const double m = atom->rmass[i];
+    const double i1 = s[0] + s[1] + s[2], mean = i1 / 3.0;
+    const double j2 = 0.5 * ((s[0] - mean) * (s[0] - mean) + (s[1] - mean) * (s[1] - mean) +
+                             (s[2] - mean) * (s[2] - mean)) +
+        s[3] * s[3] + s[4] * s[4] + s[5] * s[5];
+    local += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
+        m / atom->rho[i] * (j2 / (2 * shear) + i1 * i1 / (18 * bulk));
+  }
+  MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  return total;
+}
+}    // namespace
+
+TEST_F(SoilPhysics, ElasticVibrationConservesEnergyAtSecondOrder)
+{
+  // a standing P wave in a periodic, purely elastic patch (phi = 0 and a huge cohesion keep
+  // the stress far inside the yield surface) without artificial viscosity
+  const double K = 0.7e6, nu = 0.3, G = 3 * K * (1 - 2 * nu) / (2 * (1 + nu));
+  auto build = [&](double dt) {
+    HIDE_OUTPUT([&] {
+      command("clear");
+      command("units si");
+      command("dimension 2");
+      command("boundary p p p");
+      command("atom_style sph/soil");
+      command("atom_modify map array");
+      command("lattice sq 0.01");
+      command("region box block 0 16 0 4 -0.5 0.5");
+      command("create_box 1 box");
+      command("create_atoms 1 box");
+      command("sph_soil/set all mass 0.265 h 0.012 density 2650");
+      command("variable vx atom 0.01*sin(2*PI*x/0.16)");
+      command("velocity all set v_vx 0 0 units box");
+      command("pair_style sph/soil alpha 0 beta 0");
+      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 0 0 1e12");
+      command("fix integrate all sph/soil");
+      command("neighbor 0.002 bin");
+      command("thermo 0");
+      command(fmt::format("timestep {}", dt));
+    });
+  };
+  // energy over about one period (0.16 m / 20.7 m/s = 7.7 ms)
+  build(1.0e-5);
+  HIDE_OUTPUT([&] { command("run 0 post no"); });
+  const double e0 = elastic_total_energy(lmp, K, G);
+  HIDE_OUTPUT([&] { command("run 800 post no"); });
+  const double e1 = elastic_total_energy(lmp, K, G);
+  EXPECT_NEAR(e1, e0, 2e-3 * e0);
+
+  // order in time: positions at t = 2 ms with dt, dt/2, dt/4
+  std::vector<std::map<tagint, std::vector<double>>> results;
+  for (double dt : {2.0e-5, 1.0e-5, 0.5e-5}) {
+    build(dt);
+    HIDE_OUTPUT([&] { command(fmt::format("run {} post no", (int) std::lround(2.0e-3 / dt))); });
+    results.push_back(gather_state(lmp));
+  }
+  double e_coarse = 0.0, e_medium = 0.0;
+  for (const auto &entry : results[2]) {
+    const double x = entry.second[1];
+    e_coarse = std::max(e_coarse, std::fabs(results[0].at(entry.first)[1] - x));
+    e_medium = std::max(e_medium, std::fabs(results[1].at(entry.first)[1] - x));
+  }
+  // second order: (1 - 1/16) / (1/4 - 1/16) = 5; first order would give 3
+  EXPECT_GT(e_coarse / e_medium, 4.0) << "errors " << e_coarse << " " << e_medium;
+  EXPECT_LT(e_coarse / e_medium, 6.0) << "errors " << e_coarse << " " << e_medium;
+}
+
 TEST_F(SoilPhysics, GeostaticColumnStaysAtRest)
 {
   // a 0.1 m x 0.1 m column in a walled box, K0 initial stress, gravity

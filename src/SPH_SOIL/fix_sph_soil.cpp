@@ -8,6 +8,7 @@
 #include "atom_vec_sph_soil.h"
 #include "comm.h"
 #include "error.h"
+#include "memory.h"
 #include "force.h"
 #include "modify.h"
 #include "pair_sph_soil.h"
@@ -29,9 +30,10 @@ constexpr double BIG = 1.0e30;
 
 FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), cfl(0.0), stable_cfl(0.2), max_dt(0.0), avec(nullptr), pair(nullptr),
-    yielded_count(0)
+    yielded_count(0), step_rates(nullptr), saved_rates(nullptr), allocated_rows(0), restore_pending(false)
 {
   time_integrate = 1;
+  restart_peratom = 1;
   vector_flag = 1;
   size_vector = 3;
   global_freq = 1;
@@ -53,11 +55,21 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
   }
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   if (!avec) error->all(FLERR, "Fix sph/soil requires atom_style sph/soil");
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
 }
 
 /* ---------------------------------------------------------------------- */
 
-FixSPHSoil::~FixSPHSoil() = default;
+FixSPHSoil::~FixSPHSoil()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(saved_rates);
+  memory->destroy(step_rates);
+}
 
 /* ---------------------------------------------------------------------- */
 
@@ -76,6 +88,22 @@ void FixSPHSoil::init()
 
   model_of_type.assign(atom->ntypes + 1, nullptr);
   for (int type = 1; type <= atom->ntypes; type++) model_of_type[type] = pair->model(type);
+
+  // the rates of the first force evaluation use vest: start it at v (ghosts, made later
+  // at setup, take it from their owners)
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++)
+    if (integrated(i))
+      for (int k = 0; k < 3; k++) atom->vest[i][k] = atom->v[i][k];
+
+  if (cfl > 0.0) {
+    const double dt = stable_timestep();
+    if (dt != update->dt) {
+      update->update_time();
+      update->dt = dt;
+      update->dt_default = 0;
+    }
+  }
   reset_dt();
 }
 
@@ -91,31 +119,8 @@ void FixSPHSoil::reset_dt()
 
 bool FixSPHSoil::integrated(int i) const
 {
-  return (atom->mask[i] & groupbit) && model_of_type[atom->type[i]];
-}
-
-/* ----------------------------------------------------------------------
-   the pair sums of the first force evaluation use vest: start it at v
-------------------------------------------------------------------------- */
-
-void FixSPHSoil::setup_pre_force(int /*vflag*/)
-{
-  const int nlocal = atom->nlocal;
-  for (int i = 0; i < nlocal; i++)
-    if (integrated(i))
-      for (int k = 0; k < 3; k++) atom->vest[i][k] = atom->v[i][k];
-  // ghosts were made before this: they need the new vest too (the atom style carries it)
-  comm->forward_comm();
-  if (cfl > 0.0) {
-    const double dt = stable_timestep();
-    if (dt != update->dt) {
-      update->update_time();
-      update->dt = dt;
-      update->dt_default = 0;
-      if (force->pair) force->pair->reset_dt();
-      for (int ifix = 0; ifix < modify->nfix; ifix++) modify->fix[ifix]->reset_dt();
-    }
-  }
+  const int type = atom->type[i];
+  return (atom->mask[i] & groupbit) && type < (int) model_of_type.size() && model_of_type[type];
 }
 
 /* ----------------------------------------------------------------------
@@ -130,17 +135,13 @@ void FixSPHSoil::setup(int /*vflag*/)
       model_of_type[atom->type[i]]->stress_rate(avec->stress[i], avec->strain_rate[i], avec->spin[i],
                                                 avec->stress_rate[i]);
   if (cfl == 0.0) {
-    // measured: with the paper's viscosity (alpha = 0.1) a geostatic column grows a
-    // checkerboard mode at 0.15 h/c_p and stays at rest at 0.075 h/c_p
+    // measured: a geostatic column with the paper's viscosity (alpha = 0.1) stays at rest
+    // up to 0.195 h/c_p; the SPEC's C_cfl range is 0.1 to 0.2
     const double limit = stable_timestep();
     if (update->dt > limit)
       error->all(FLERR, "Fix sph/soil: timestep {:.6g} exceeds the stability limit {:.6g} = "
                         "{} * min(h) / c_p; use a smaller timestep or 'cfl 0.1'",
                  update->dt, limit, stable_cfl);
-    if (update->dt > 0.5 * limit && comm->me == 0)
-      error->warning(FLERR, "Fix sph/soil: timestep {:.6g} is above 0.1 * min(h) / c_p = {:.6g}; "
-                            "low artificial viscosity may then let a checkerboard mode grow",
-                     update->dt, 0.5 * limit);
   }
 }
 
@@ -152,24 +153,42 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
   double *rho = atom->rho, *drho = atom->drho, *rmass = atom->rmass;
   const int nlocal = atom->nlocal;
 
+  if (restore_pending) {
+    for (int i = 0; i < nlocal; i++)
+      if (saved_rates[i][0] != 0.0) {
+        if (integrated(i)) restore_rates(i, saved_rates[i]);
+        saved_rates[i][0] = 0.0;
+      }
+    restore_pending = false;
+  }
+
   for (int i = 0; i < nlocal; i++) {
     if (!integrated(i)) continue;
+    // velocity Verlet for x, v; vest estimates v(t + dt) for the rates
     const double dtfm = dtf / rmass[i];
     for (int a = 0; a < 3; a++) {
-      vest[i][a] = v[i][a] + 2.0 * dtfm * f[i][a];    // v(t + dt) estimate for the rates
+      vest[i][a] = v[i][a] + 2.0 * dtfm * f[i][a];
       v[i][a] += dtfm * f[i][a];
       x[i][a] += dtv * v[i][a];
     }
-    rho[i] += dtf * drho[i];
+    // Heun predictor for density, strain and stress: a full step with the old rates,
+    // so that the force evaluation sees the state at t + dt (a half step would make the
+    // scheme first order); the old rates are kept for the corrector
+    double *old = step_rates[i];
+    old[0] = drho[i];
+    rho[i] += dtv * drho[i];
     for (int k = 0; k < 6; k++) {
-      avec->total_strain[i][k] += dtf * avec->strain_rate[i][k];
-      avec->stress[i][k] += dtf * avec->stress_rate[i][k];
+      old[1 + k] = avec->strain_rate[i][k];
+      avec->total_strain[i][k] += dtv * avec->strain_rate[i][k];
+      avec->stress[i][k] += dtv * avec->stress_rate[i][k];
     }
     model_of_type[atom->type[i]]->return_to_admissible(avec->stress[i]);
   }
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   second velocity half kick; Heun corrector: y(t+dt) = y(t) + dt/2 (rate(t) + rate(t+dt))
+------------------------------------------------------------------------- */
 
 void FixSPHSoil::final_integrate()
 {
@@ -182,12 +201,20 @@ void FixSPHSoil::final_integrate()
     if (!integrated(i)) continue;
     const double dtfm = dtf / rmass[i];
     for (int a = 0; a < 3; a++) v[i][a] += dtfm * f[i][a];
-    rho[i] += dtf * drho[i];
+    const double *old = step_rates[i];
+    rho[i] += dtf * (drho[i] - old[0]);
+    for (int k = 0; k < 6; k++)
+      avec->total_strain[i][k] += dtf * (avec->strain_rate[i][k] - old[1 + k]);
+
     const auto model = model_of_type[atom->type[i]];
     double *stress = avec->stress[i];
-    for (int k = 0; k < 6; k++) avec->total_strain[i][k] += dtf * avec->strain_rate[i][k];
-    model->stress_rate(stress, avec->strain_rate[i], avec->spin[i], avec->stress_rate[i]);
-    for (int k = 0; k < 6; k++) stress[k] += dtf * avec->stress_rate[i][k];
+    double *stress_rate = avec->stress_rate[i];
+    double new_rate[6];
+    model->stress_rate(stress, avec->strain_rate[i], avec->spin[i], new_rate);
+    for (int k = 0; k < 6; k++) {
+      stress[k] += dtf * (new_rate[k] - stress_rate[k]);
+      stress_rate[k] = new_rate[k];
+    }
     if (model->return_to_admissible(stress)) yielded++;
     check_state(i);
   }
@@ -242,6 +269,119 @@ void FixSPHSoil::end_of_step()
   update->dt_default = 0;
   if (force->pair) force->pair->reset_dt();
   for (int ifix = 0; ifix < modify->nfix; ifix++) modify->fix[ifix]->reset_dt();
+}
+
+/* ----------------------------------------------------------------------
+   keep the rates of the last step for the next run (see the header)
+------------------------------------------------------------------------- */
+
+void FixSPHSoil::post_run()
+{
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++) {
+    if (integrated(i)) save_rates(i, saved_rates[i]);
+    else saved_rates[i][0] = 0.0;
+  }
+  restore_pending = true;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHSoil::save_rates(int i, double *row) const
+{
+  row[0] = 1.0;
+  const double inv_mass = 1.0 / atom->rmass[i];
+  for (int a = 0; a < 3; a++) row[1 + a] = atom->f[i][a] * inv_mass;
+  row[4] = atom->drho[i];
+  for (int k = 0; k < 6; k++) {
+    row[5 + k] = avec->strain_rate[i][k];
+    row[11 + k] = avec->stress_rate[i][k];
+  }
+}
+
+void FixSPHSoil::restore_rates(int i, const double *row)
+{
+  for (int a = 0; a < 3; a++) atom->f[i][a] = row[1 + a] * atom->rmass[i];
+  atom->drho[i] = row[4];
+  for (int k = 0; k < 6; k++) {
+    avec->strain_rate[i][k] = row[5 + k];
+    avec->stress_rate[i][k] = row[11 + k];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHSoil::grow_arrays(int nmax)
+{
+  memory->grow(step_rates, nmax, NSTEP, "sph/soil:step_rates");
+  memory->grow(saved_rates, nmax, NRATES + 1, "sph/soil:saved_rates");
+  // new rows hold nothing to restore (atoms made later by create_atoms etc.)
+  for (int i = allocated_rows; i < nmax; i++) saved_rates[i][0] = 0.0;
+  allocated_rows = nmax;
+}
+
+void FixSPHSoil::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int k = 0; k < NSTEP; k++) step_rates[j][k] = step_rates[i][k];
+  for (int k = 0; k <= NRATES; k++) saved_rates[j][k] = saved_rates[i][k];
+}
+
+// atoms migrate between the predictor and the corrector: the old rates go with them
+int FixSPHSoil::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < NSTEP; k++) buf[k] = step_rates[i][k];
+  buf[NSTEP] = saved_rates[i][0];
+  if (buf[NSTEP] == 0.0) return NSTEP + 1;
+  for (int k = 1; k <= NRATES; k++) buf[NSTEP + k] = saved_rates[i][k];
+  return NSTEP + NRATES + 1;
+}
+
+int FixSPHSoil::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < NSTEP; k++) step_rates[nlocal][k] = buf[k];
+  saved_rates[nlocal][0] = buf[NSTEP];
+  if (buf[NSTEP] == 0.0) return NSTEP + 1;
+  for (int k = 1; k <= NRATES; k++) saved_rates[nlocal][k] = buf[NSTEP + k];
+  restore_pending = true;
+  return NSTEP + NRATES + 1;
+}
+
+/* ----------------------------------------------------------------------
+   restart files: the current rates (between runs they are those of the last step)
+------------------------------------------------------------------------- */
+
+int FixSPHSoil::pack_restart(int i, double *buf)
+{
+  // buf[0] is the count of values including itself, the way other fixes read it
+  buf[0] = NRATES + 2;
+  save_rates(i, &buf[1]);
+  if (!integrated(i)) buf[1] = 0.0;
+  return NRATES + 2;
+}
+
+void FixSPHSoil::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k <= NRATES; k++) saved_rates[nlocal][k] = extra[nlocal][m++];
+  if (saved_rates[nlocal][0] != 0.0) restore_pending = true;
+}
+
+int FixSPHSoil::maxsize_restart()
+{
+  return NRATES + 2;
+}
+
+int FixSPHSoil::size_restart(int /*nlocal*/)
+{
+  return NRATES + 2;
+}
+
+double FixSPHSoil::memory_usage()
+{
+  return (double) atom->nmax * (NRATES + 1 + NSTEP) * sizeof(double);
 }
 
 /* ----------------------------------------------------------------------

@@ -34,13 +34,24 @@ class FixSPHSoil : public Fix {
   ~FixSPHSoil() override;
   int setmask() override;
   void init() override;
-  void setup_pre_force(int) override;
   void setup(int) override;
   void initial_integrate(int) override;
   void final_integrate() override;
   void end_of_step() override;
   void reset_dt() override;
+  void post_run() override;
   double compute_vector(int) override;
+
+  // the rates of the last step travel with the atoms, into restart files and the next run
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int maxsize_restart() override;
+  int size_restart(int) override;
+  double memory_usage() override;
 
  protected:
   double dtv, dtf;
@@ -51,6 +62,20 @@ class FixSPHSoil : public Fix {
   class PairSPHSoil *pair;
   std::vector<const SPHSoil::ConstitutiveModel *> model_of_type;    // owned by the pair style
   bigint yielded_count;
+
+  // Rates of the last step (acceleration, density rate, strain rate, stress rate), saved at
+  // the end of a run and in restart files, and used by the first half step of the next run
+  // instead of the rates that setup recomputes from the full-step state: so a restarted or
+  // continued run is identical to an uninterrupted one. Row layout: flag, then NRATES values.
+  static constexpr int NRATES = 16;
+  // density rate and strain rate at the start of the step, for the Heun corrector
+  static constexpr int NSTEP = 7;
+  double **step_rates;
+  double **saved_rates;
+  int allocated_rows;
+  bool restore_pending;
+  void save_rates(int i, double *row) const;
+  void restore_rates(int i, const double *row);
 
   bool integrated(int i) const;
   void update_stress(int i);
