@@ -101,6 +101,23 @@ TEST_F(AtomStyleSPHSoil, SetCommandSetsEveryField)
   EXPECT_EQ(t[24], 0.0);
 }
 
+TEST_F(AtomStyleSPHSoil, GeostaticStress)
+{
+  create_system();
+  HIDE_OUTPUT([&] { command("sph_soil/set all geostatic 0.3 2000 10 0.5"); });
+  auto state = gather_state(lmp);
+  for (const auto &entry : state) {
+    const auto &s = entry.second;
+    const double sv = s[2] < 0.3 ? 2000 * 10 * (s[2] - 0.3) : 0.0;
+    EXPECT_DOUBLE_EQ(s[12], sv);          // syy
+    EXPECT_DOUBLE_EQ(s[11], 0.5 * sv);    // sxx
+    EXPECT_DOUBLE_EQ(s[13], 0.5 * sv);    // szz
+    EXPECT_EQ(s[14], 0.0);                // sxy
+  }
+  EXPECT_LAMMPS_ERROR(".*Illegal sph_soil/set geostatic K0 -1: must be in \\[0, 10\\].*",
+                      command("sph_soil/set all geostatic 0.3 2000 10 -1"));
+}
+
 TEST_F(AtomStyleSPHSoil, DataFileRoundTripKeepsEveryField)
 {
   create_system();

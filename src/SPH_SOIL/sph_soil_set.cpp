@@ -76,6 +76,30 @@ void SPHSoilSet::command(int narg, char **arg)
           if (mask[i] & groupbit) target[i][k] = values[i];
       }
       iarg += 1 + AtomVecSPHSoil::NVOIGT;
+    } else if (keyword == "geostatic") {
+      // sigma_v = rho0 g (v - v_surface) below the surface (0 above), sigma_h = K0 sigma_v;
+      // v is y in 2D and z in 3D
+      need(4);
+      const double surface = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      const double density = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      const double gravity = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+      const double k0 = utils::numeric(FLERR, arg[iarg + 4], false, lmp);
+      if (!(density > 0.0))
+        error->all(FLERR, "Illegal sph_soil/set geostatic density {}: must be > 0", density);
+      if (!(gravity >= 0.0))
+        error->all(FLERR, "Illegal sph_soil/set geostatic gravity {}: must be >= 0", gravity);
+      if (!(k0 >= 0.0 && k0 <= 10.0))
+        error->all(FLERR, "Illegal sph_soil/set geostatic K0 {}: must be in [0, 10]", k0);
+      const int vertical = domain->dimension == 2 ? 1 : 2;
+      double **x = atom->x;
+      for (int i = 0; i < nlocal; i++) {
+        if (!(mask[i] & groupbit)) continue;
+        const double sv = density * gravity * MIN(x[i][vertical] - surface, 0.0);
+        double *stress = avec->stress[i];
+        for (int k = 0; k < 3; k++) stress[k] = k == vertical ? sv : k0 * sv;
+        for (int k = 3; k < 6; k++) stress[k] = 0.0;
+      }
+      iarg += 5;
     } else if (keyword == "wall") {
       need(6);
       double point[3], normal[3];
@@ -111,7 +135,7 @@ void SPHSoilSet::command(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "Illegal sph_soil/set command: unknown keyword {} (allowed: mass, h, density, "
-                 "level, stress, strain, wall, nowall)",
+                 "level, stress, strain, geostatic, wall, nowall)",
                  keyword);
     }
 
