@@ -6,6 +6,7 @@
 #include "domain.h"
 #include "fix.h"
 #include "force.h"
+#include "compute.h"
 #include "modify.h"
 #include "update.h"
 
@@ -378,6 +379,45 @@ TEST_F(SoilPhysics, IntegratingAnotherAtomStyleIsAnError)
   EXPECT_LAMMPS_ERROR(".*Fix sph/soil requires atom_style sph/soil.*", command("fix f all sph/soil"));
   EXPECT_LAMMPS_ERROR(".*Compute sph/soil/atom requires atom_style sph/soil.*",
                       command("compute c all sph/soil/atom"));
+}
+
+TEST_F(SoilPhysics, ComputeGivesInvariantsAndStrainMeasure)
+{
+  HIDE_OUTPUT([&] { command("variable vx atom 0.0"); });
+  periodic_patch();
+  soil_run_setup();
+  HIDE_OUTPUT([&] {
+    command("sph_soil/set all stress -3000 -2500 -2750 100 0 0 strain 0.1 -0.2 0.0 0.05 0 0");
+    command("compute soil all sph/soil/atom pressure sqrtJ2 strain yielded density h level sxy");
+    command("compute sum all reduce max c_soil[1] c_soil[2] c_soil[3] c_soil[4] c_soil[6] c_soil[8]");
+    command("thermo_style custom step c_sum[1] c_sum[2] c_sum[3] c_sum[4] c_sum[5] c_sum[6]");
+    command("run 0 post no");
+  });
+  auto compute = lmp->modify->compute[lmp->modify->find_compute("sum")];
+  compute->compute_vector();
+  const double *v = compute->vector;
+  // pressure 2750; J2 = (250^2 + 250^2 + 0)/2 + 100^2 = 72500, inside alpha_phi |I1| = 916
+  EXPECT_NEAR(v[0], 2750.0, 1e-9);
+  EXPECT_NEAR(v[1], std::sqrt(72500.0), 1e-9);
+  EXPECT_NEAR(v[2], 0.1 * 0.1 + 0.2 * 0.2, 1e-15);
+  EXPECT_EQ(v[3], 0.0);    // inside the yield surface of phi = 19.8
+  EXPECT_EQ(v[4], 0.012);
+  EXPECT_EQ(v[5], 100.0);
+  // and on the surface when sqrt(J2) exceeds alpha_phi |I1| (the stress is returned at the next step)
+  HIDE_OUTPUT([&] {
+    command("sph_soil/set all stress -3000 -1000 -2000 500 0 0");
+    command("run 0 post no");
+  });
+  compute->compute_vector();
+  EXPECT_EQ(compute->vector[3], 1.0);
+}
+
+TEST_F(SoilPhysics, ThreeDimensionalOptionInTwoDimensions)
+{
+  HIDE_OUTPUT([&] { command("variable vx atom 0.0"); });
+  periodic_patch();
+  EXPECT_LAMMPS_ERROR(".*Illegal sph_soil/set wall: the normal must lie in the xy plane in 2D.*",
+                      command("sph_soil/set all wall 0 0 0 0 0.6 0.8"));
 }
 
 TEST_F(SoilPhysics, AdaptiveTimestepFollowsSmallestH)
