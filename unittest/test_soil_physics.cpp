@@ -316,14 +316,14 @@ TEST_F(SoilPhysics, BadPairInput)
   EXPECT_LAMMPS_ERROR(".*pair_coeff sph/soil: material of type\\(s\\) 1: 'soil' needs 6 parameters "
                       "\\(rho0 K nu phi psi c\\), got 5.*",
                       command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0"));
-  EXPECT_LAMMPS_ERROR(".*bulk modulus -1 must be > 0.*", command("pair_coeff 1 1 soil 2650 -1 0.3 19.8 0 0"));
-  EXPECT_LAMMPS_ERROR(".*Poisson ratio 0.5 must be in \\(-1, 0.5\\).*",
+  EXPECT_LAMMPS_ERROR(".*bulk modulus K = -1 must be finite and > 0.*", command("pair_coeff 1 1 soil 2650 -1 0.3 19.8 0 0"));
+  EXPECT_LAMMPS_ERROR(".*Poisson ratio nu = 0.5 must be in \\(-1, 0.5\\).*",
                       command("pair_coeff 1 1 soil 2650 0.7e6 0.5 19.8 0 0"));
-  EXPECT_LAMMPS_ERROR(".*Poisson ratio -1 must be in \\(-1, 0.5\\).*",
+  EXPECT_LAMMPS_ERROR(".*Poisson ratio nu = -1 must be in \\(-1, 0.5\\).*",
                       command("pair_coeff 1 1 soil 2650 0.7e6 -1 19.8 0 0"));
-  EXPECT_LAMMPS_ERROR(".*friction angle 90 must be in \\[0, 90\\) degrees.*",
+  EXPECT_LAMMPS_ERROR(".*friction angle phi = 90 must be in \\[0, 90\\) degrees.*",
                       command("pair_coeff 1 1 soil 2650 0.7e6 0.3 90 0 0"));
-  EXPECT_LAMMPS_ERROR(".*friction angle -5 must be in \\[0, 90\\) degrees.*",
+  EXPECT_LAMMPS_ERROR(".*friction angle phi = -5 must be in \\[0, 90\\) degrees.*",
                       command("pair_coeff 1 1 soil 2650 0.7e6 0.3 -5 0 0"));
   EXPECT_LAMMPS_ERROR(".*both type arguments must be the same \\(got 1 2\\).*",
                       command("pair_coeff 1 2 soil 2650 0.7e6 0.3 19.8 0 0"));

@@ -4,6 +4,8 @@
 
 #include "soil_material.h"
 
+#include "soil_constitutive.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -31,17 +33,16 @@ std::string format(double value)
 std::string SoilMaterial::check() const
 {
   if (wall) return "";
-  if (!(density > 0.0)) return "density " + format(density) + " must be > 0";
-  if (!(bulk_modulus > 0.0)) return "bulk modulus " + format(bulk_modulus) + " must be > 0";
-  if (!(poisson_ratio > -1.0 && poisson_ratio < 0.5))
-    return "Poisson ratio " + format(poisson_ratio) + " must be in (-1, 0.5)";
-  if (!(friction_angle >= 0.0 && friction_angle < 90.0))
-    return "friction angle " + format(friction_angle) + " must be in [0, 90) degrees";
-  if (!(dilatancy_angle >= 0.0 && dilatancy_angle <= friction_angle))
-    return "dilatancy angle " + format(dilatancy_angle) + " must be in [0, friction angle " +
-        format(friction_angle) + "] degrees";
-  if (!(cohesion >= 0.0)) return "cohesion " + format(cohesion) + " must be >= 0";
-  return "";
+  if (!(density > 0.0) || !std::isfinite(density))
+    return "density rho0 = " + format(density) + " must be finite and > 0";
+  // the elastic-plastic parameters are the constitutive model's to judge
+  DruckerPragerParameters parameters;
+  parameters.bulk_modulus = bulk_modulus;
+  parameters.poisson_ratio = poisson_ratio;
+  parameters.friction_angle = friction_angle;
+  parameters.dilatancy_angle = dilatancy_angle;
+  parameters.cohesion = cohesion;
+  return DruckerPrager::check(parameters);
 }
 
 double SoilMaterial::wave_speed() const
