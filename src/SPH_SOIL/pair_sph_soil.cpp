@@ -29,7 +29,7 @@ using SPHSoil::SoilMaterial;
 
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1), free_slip(false),
-    sound_speed_ij(nullptr), max_h(0.0)
+    sound_speed_ij(nullptr), max_h(0.0), avec(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -206,7 +206,7 @@ void PairSPHSoil::read_material_file(const char *file, std::vector<SoilMaterial>
 
 void PairSPHSoil::init_style()
 {
-  auto avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   if (!avec) error->all(FLERR, "Pair style sph/soil requires atom_style sph/soil");
 
   // the cutoff follows the largest smoothing length; every particle needs h > 0
@@ -227,6 +227,10 @@ void PairSPHSoil::init_style()
                       "'sph_soil/set <group> h <value>'", firstbad);
   MPI_Allreduce(&local_max, &max_h, 1, MPI_DOUBLE, MPI_MAX, world);
   if (max_h <= 0.0) error->all(FLERR, "Pair sph/soil: no particle with a material and h > 0");
+
+  // every type has a material here (init_one stops otherwise): a plain flag for the pair loop
+  type_is_wall.assign(atom->ntypes + 1, 0);
+  for (int t = 1; t <= atom->ntypes; t++) type_is_wall[t] = materials[t].wall ? 1 : 0;
 
   // one constitutive model per soil type, built from its material (the factory decides which)
   models.clear();
@@ -292,7 +296,6 @@ void PairSPHSoil::compute(int eflag, int vflag)
 
 template <int DIMENSION> void PairSPHSoil::eval()
 {
-  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   double **x = atom->x;
   double **f = atom->f;
   double **vest = atom->vest;
@@ -318,7 +321,7 @@ template <int DIMENSION> void PairSPHSoil::eval()
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const int itype = type[i];
-    if (!type_set[itype] || materials[itype].wall) continue;
+    if (type_is_wall[itype]) continue;
 
     const double *xi = x[i];
     const double *vi = vest[i];
@@ -341,7 +344,6 @@ template <int DIMENSION> void PairSPHSoil::eval()
       const double hij = 0.5 * (hi + h[j]);
       if (r2 >= 4.0 * hij * hij) continue;
       const int jtype = type[j];
-      if (!type_set[jtype]) continue;
 
       const double r = sqrt(r2);
       const double factor = CubicSpline::gradient_factor(DIMENSION, r, hij);
@@ -353,7 +355,7 @@ template <int DIMENSION> void PairSPHSoil::eval()
       double rhoj;
       const double *stress_j;    // sigma_j / rho_j^2
       double stress_j_storage[6];
-      if (materials[jtype].wall) {
+      if (type_is_wall[jtype]) {
         // Bui 2008: the wall particle b moves with -(d_b/d_a) v_a, limited so that
         // v_a - v_b = beta v_a, beta = min(1.5, 1 + d_b/d_a); it takes a's stress and density
         const double *n = wall_normal[j];

@@ -51,9 +51,11 @@ class PairSPHSoil : public Pair {
   bool free_slip;                            // walls: reverse only the normal velocity
   std::vector<SPHSoil::SoilMaterial> materials;    // per atom type, index 1..ntypes
   std::vector<int> type_set;                       // 1 once pair_coeff gave the type a material
+  std::vector<int> type_is_wall;                   // per type, for the pair loop
   double **sound_speed_ij;                         // mean P-wave speed of a type pair
   double max_h;                                    // largest smoothing length at init
   std::vector<std::unique_ptr<SPHSoil::ConstitutiveModel>> models;    // per atom type
+  class AtomVecSPHSoil *avec;
 
   void allocate();
   void set_type_material(int type, const SPHSoil::SoilMaterial &material);
