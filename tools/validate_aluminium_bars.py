@@ -77,13 +77,14 @@ def failure_line(x0, y0, moved, spacing, height):
 
 
 def wall_seconds(directory):
-    for name in sorted(os.listdir(directory)):
-        if name.startswith('log.'):
-            text = open(os.path.join(directory, name)).read()
-            m = re.findall(r'Total wall time: (\d+):(\d+):(\d+)', text)
-            if m:
-                h, mi, s = (int(v) for v in m[-1])
-                return h * 3600 + mi * 60 + s
+    """Wall time of the newest LAMMPS log in the directory (not the reference logs)."""
+    logs = [os.path.join(directory, n) for n in os.listdir(directory)
+            if n.startswith('log.') and '.short.' not in n]
+    for path in sorted(logs, key=os.path.getmtime, reverse=True):
+        m = re.findall(r'Total wall time: (\d+):(\d+):(\d+)', open(path).read())
+        if m:
+            h, mi, s = (int(v) for v in m[-1])
+            return h * 3600 + mi * 60 + s
     return None
 
 

@@ -82,6 +82,7 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
 
   // Which fields travel where (why):
   //  comm (every step):  rho, stress, vest   - the pair sum needs them from ghosts
+  //  reverse (every step): drho, strain rate, spin - ghosts' shares of the pair sums
   //  border:             + mass, h, wall data - constant between reneighborings
   //  exchange/restart:   the whole state; the rates are recomputed before use
   //  data file:          the whole state, see doc/atom_style_sph_soil.rst
@@ -100,7 +101,8 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   assign_fields(fields_copy, all, field_storage[1]);
   assign_fields(fields_comm, comm, field_storage[2]);
   assign_fields(fields_comm_vel, comm, field_storage[3]);
-  assign_fields(fields_reverse, {}, field_storage[4]);
+  // the pair style accumulates rates on ghosts (Newton's third law): they go back to owners
+  assign_fields(fields_reverse, {"drho", STRAIN_RATE_NAME, SPIN_NAME}, field_storage[4]);
   assign_fields(fields_border, border, field_storage[5]);
   assign_fields(fields_border_vel, border, field_storage[6]);
   assign_fields(fields_exchange, state, field_storage[7]);

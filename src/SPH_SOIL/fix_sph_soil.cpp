@@ -117,11 +117,6 @@ void FixSPHSoil::reset_dt()
 
 /* ---------------------------------------------------------------------- */
 
-bool FixSPHSoil::integrated(int i) const
-{
-  const int type = atom->type[i];
-  return (atom->mask[i] & groupbit) && type < (int) model_of_type.size() && model_of_type[type];
-}
 
 /* ----------------------------------------------------------------------
    the first half step of the stress needs the rate at the start
@@ -227,15 +222,16 @@ void FixSPHSoil::final_integrate()
 
 void FixSPHSoil::check_state(int i)
 {
-  bool finite = std::isfinite(atom->rho[i]) && atom->rho[i] > 0.0;
-  for (int a = 0; a < 3; a++) finite = finite && std::isfinite(atom->v[i][a]) && std::isfinite(atom->x[i][a]);
-  for (int k = 0; k < 6; k++) finite = finite && std::isfinite(avec->stress[i][k]);
-  if (!finite)
-    error->one(FLERR,
-               "Fix sph/soil: particle {} became unstable at step {} (density {}, velocity {} {} "
-               "{}, stress xx {}); reduce the timestep (or the cfl value)",
-               atom->tag[i], update->ntimestep, atom->rho[i], atom->v[i][0], atom->v[i][1],
-               atom->v[i][2], avec->stress[i][0]);
+  // one test for all: a NaN or an infinity anywhere makes the sum non-finite
+  double sum = atom->rho[i];
+  for (int a = 0; a < 3; a++) sum += atom->v[i][a] + atom->x[i][a];
+  for (int k = 0; k < 6; k++) sum += avec->stress[i][k];
+  if (std::isfinite(sum) && atom->rho[i] > 0.0) return;
+  error->one(FLERR,
+             "Fix sph/soil: particle {} became unstable at step {} (density {}, velocity {} {} "
+             "{}, stress xx {}); reduce the timestep (or the cfl value)",
+             atom->tag[i], update->ntimestep, atom->rho[i], atom->v[i][0], atom->v[i][1],
+             atom->v[i][2], avec->stress[i][0]);
 }
 
 /* ---------------------------------------------------------------------- */

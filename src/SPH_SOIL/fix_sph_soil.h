@@ -18,6 +18,7 @@ FixStyle(sph/soil,FixSPHSoil);
 #ifndef LMP_FIX_SPH_SOIL_H
 #define LMP_FIX_SPH_SOIL_H
 
+#include "atom.h"
 #include "fix.h"
 
 #include <vector>
@@ -77,7 +78,11 @@ class FixSPHSoil : public Fix {
   void save_rates(int i, double *row) const;
   void restore_rates(int i, const double *row);
 
-  bool integrated(int i) const;
+  bool integrated(int i) const
+  {
+    const int type = atom->type[i];
+    return (atom->mask[i] & groupbit) && type < (int) model_of_type.size() && model_of_type[type];
+  }
   void update_stress(int i);
   void check_state(int i);
   double stable_timestep();

@@ -29,7 +29,8 @@ using SPHSoil::SoilMaterial;
 
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1), free_slip(false),
-    sound_speed_ij(nullptr), max_h(0.0), avec(nullptr)
+    sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), nmax_factors(0),
+    stress_over_rho2(nullptr), volume(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -42,6 +43,8 @@ PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
 
 PairSPHSoil::~PairSPHSoil()
 {
+  memory->destroy(stress_over_rho2);
+  memory->destroy(volume);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -238,7 +241,8 @@ void PairSPHSoil::init_style()
   for (int t = 1; t <= atom->ntypes; t++)
     if (type_set[t] && !materials[t].wall) models[t] = SPHSoil::make_constitutive_model(materials[t]);
 
-  SphSoilCompat::request_full_neighbor_list(neighbor, this, false, instance_me);
+  // a half list: each pair once, shares to both particles (see eval())
+  SphSoilCompat::request_half_neighbor_list(neighbor, this, instance_me);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -290,8 +294,35 @@ void PairSPHSoil::compute(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
-   the SPH sums of SPEC section 2 for every local soil particle i
-   (full list: each particle sums over all its neighbours itself)
+   per-atom factors of the pair sums, once per step for owned and ghost atoms:
+   sigma/rho^2 (the momentum equation) and the volume m/rho (the velocity gradient)
+------------------------------------------------------------------------- */
+
+void PairSPHSoil::prepare_atom_factors()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (nall > nmax_factors) {
+    nmax_factors = atom->nmax;
+    memory->destroy(stress_over_rho2);
+    memory->destroy(volume);
+    memory->create(stress_over_rho2, nmax_factors, 6, "pair:stress_over_rho2");
+    memory->create(volume, nmax_factors, "pair:volume");
+  }
+  const double *rho = atom->rho, *rmass = atom->rmass;
+  double **stress = avec->stress;
+  for (int i = 0; i < nall; i++) {
+    const double inv_rho = 1.0 / rho[i];
+    const double inv_rho2 = inv_rho * inv_rho;
+    for (int k = 0; k < 6; k++) stress_over_rho2[i][k] = stress[i][k] * inv_rho2;
+    volume[i] = rmass[i] * inv_rho;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the SPH sums of SPEC section 2 over a half neighbour list: every pair once,
+   its contributions to both particles (Newton's third law: momentum is
+   conserved exactly); ghosts' shares return to their owners by reverse
+   communication (the atom style carries drho, strain rate and spin back)
 ------------------------------------------------------------------------- */
 
 template <int DIMENSION> void PairSPHSoil::eval()
@@ -303,12 +334,15 @@ template <int DIMENSION> void PairSPHSoil::eval()
   double *drho = atom->drho;
   const double *rmass = atom->rmass;
   const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
   const double *h = avec->smoothing_length;
-  double **stress = avec->stress;
   double **strain_rate = avec->strain_rate;
   double **spin = avec->spin;
   double **wall_normal = avec->wall_normal;
   const double *wall_distance = avec->wall_distance;
+
+  prepare_atom_factors();
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -318,109 +352,160 @@ template <int DIMENSION> void PairSPHSoil::eval()
   // Voigt index of tensor component (a, b)
   static const int voigt[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
 
+  // add the velocity-gradient term t^ab = (v_j - v_i)^a dW/dx_i^b, weighted, to a particle
+  auto add_gradient = [&](int k, double weight, const double t[3][3]) {
+    double *e = strain_rate[k], *w = spin[k];
+    e[0] += weight * t[0][0];
+    e[1] += weight * t[1][1];
+    e[3] += weight * 0.5 * (t[0][1] + t[1][0]);
+    w[0] += weight * 0.5 * (t[0][1] - t[1][0]);
+    if (DIMENSION == 3) {
+      e[2] += weight * t[2][2];
+      e[4] += weight * 0.5 * (t[0][2] + t[2][0]);
+      e[5] += weight * 0.5 * (t[1][2] + t[2][1]);
+      w[1] += weight * 0.5 * (t[0][2] - t[2][0]);
+      w[2] += weight * 0.5 * (t[1][2] - t[2][1]);
+    }
+  };
+
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const int itype = type[i];
-    if (type_is_wall[itype]) continue;
-
+    const bool wall_i = type_is_wall[itype];
     const double *xi = x[i];
-    const double *vi = vest[i];
-    const double rhoi = rho[i];
     const double hi = h[i];
-    double stress_i[6];    // sigma_i / rho_i^2
-    const double inv_rho2_i = 1.0 / (rhoi * rhoi);
-    for (int k = 0; k < 6; k++) stress_i[k] = stress[i][k] * inv_rho2_i;
+    const double *vi = vest[i];
+    const double *si = stress_over_rho2[i];
+    const double mi = rmass[i], rhoi = rho[i], volume_i = volume[i];
 
-    double density_rate = 0.0;
-    double acceleration[3] = {0.0, 0.0, 0.0};
-    double gradient[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};    // dv^a/dx^b
+    // i's shares of soil-soil pairs, accumulated here and stored once after the j loop
+    double drho_i = 0.0, force_i[3] = {0.0, 0.0, 0.0};
+    double gradient_i[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
 
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
+      const int jtype = type[j];
+      const bool wall_j = type_is_wall[jtype];
+      if (wall_i && wall_j) continue;
       double dx[3] = {xi[0] - x[j][0], xi[1] - x[j][1], DIMENSION == 3 ? xi[2] - x[j][2] : 0.0};
       const double r2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
       const double hij = 0.5 * (hi + h[j]);
       if (r2 >= 4.0 * hij * hij) continue;
-      const int jtype = type[j];
 
       const double r = sqrt(r2);
-      const double factor = CubicSpline::gradient_factor(DIMENSION, r, hij);
-      double gradW[3];
-      for (int a = 0; a < DIMENSION; a++) gradW[a] = factor * dx[a];
+      const double factor = CubicSpline::gradient_factor_from_inverse<DIMENSION>(r, 1.0 / hij);
+      const double c_ij = sound_speed_ij[itype][jtype];
 
-      const double mj = rmass[j];
-      double vij[3];
-      double rhoj;
-      const double *stress_j;    // sigma_j / rho_j^2
-      double stress_j_storage[6];
-      if (type_is_wall[jtype]) {
-        // Bui 2008: the wall particle b moves with -(d_b/d_a) v_a, limited so that
-        // v_a - v_b = beta v_a, beta = min(1.5, 1 + d_b/d_a); it takes a's stress and density
-        const double *n = wall_normal[j];
-        double da = -wall_distance[j];
-        for (int a = 0; a < DIMENSION; a++) da += dx[a] * n[a];
-        const double beta = da > 0.0 ? MIN(1.5, 1.0 + wall_distance[j] / da) : 1.5;
-        if (free_slip) {
-          double vn = 0.0;
-          for (int a = 0; a < DIMENSION; a++) vn += vi[a] * n[a];
-          for (int a = 0; a < 3; a++) vij[a] = beta * vn * n[a];
-        } else {
-          for (int a = 0; a < 3; a++) vij[a] = beta * vi[a];
+      if (!wall_i && !wall_j) {
+        // soil-soil: grad = dW/dx_i, and dW/dx_j = -grad
+        double grad[3], vij[3];
+        double vdotgrad = 0.0, vdotx = 0.0;
+        for (int a = 0; a < DIMENSION; a++) {
+          grad[a] = factor * dx[a];
+          vij[a] = vi[a] - vest[j][a];
+          vdotgrad += vij[a] * grad[a];
+          vdotx += vij[a] * dx[a];
         }
-        rhoj = rhoi;
-        stress_j = stress_i;
-      } else {
-        for (int a = 0; a < 3; a++) vij[a] = vi[a] - vest[j][a];
-        rhoj = rho[j];
-        const double inv_rho2_j = 1.0 / (rhoj * rhoj);
-        for (int k = 0; k < 6; k++) stress_j_storage[k] = stress[j][k] * inv_rho2_j;
-        stress_j = stress_j_storage;
+        const double mj = rmass[j];
+        const bool update_j = newton_pair || j < nlocal;
+        drho_i += mj * vdotgrad;
+        if (update_j) drho[j] += mi * vdotgrad;
+
+        // Monaghan artificial viscosity, only for approaching pairs
+        double viscosity = 0.0;
+        if (vdotx < 0.0) {
+          const double mu = hij * vdotx / (r2 + 0.01 * hij * hij);
+          viscosity = (-viscosity_alpha * c_ij * mu + viscosity_beta * mu * mu) / (0.5 * (rhoi + rho[j]));
+        }
+        const double *sj = stress_over_rho2[j];
+        const double mimj = mi * mj;
+        double pair_force[3];
+        if (DIMENSION == 2) {
+          // written out: the 2D case is the one the paper's problems run
+          const double sxx = si[0] + sj[0], syy = si[1] + sj[1], sxy = si[3] + sj[3];
+          pair_force[0] = mimj * ((sxx - viscosity) * grad[0] + sxy * grad[1]);
+          pair_force[1] = mimj * (sxy * grad[0] + (syy - viscosity) * grad[1]);
+        } else {
+          for (int a = 0; a < DIMENSION; a++) {
+            double sum = -viscosity * grad[a];
+            for (int b = 0; b < DIMENSION; b++) {
+              const int k = voigt[a][b];
+              sum += (si[k] + sj[k]) * grad[b];
+            }
+            pair_force[a] = mimj * sum;
+          }
+        }
+        for (int a = 0; a < DIMENSION; a++) {
+          force_i[a] += pair_force[a];
+          if (update_j) f[j][a] -= pair_force[a];
+        }
+
+        // g_i += V_j (v_j - v_i) x grad, and g_j += V_i (v_i - v_j) x (-grad): the same tensor
+        double t[3][3];
+        const double volume_j = volume[j];
+        for (int a = 0; a < DIMENSION; a++)
+          for (int b = 0; b < DIMENSION; b++) {
+            t[a][b] = -vij[a] * grad[b];
+            gradient_i[a][b] += volume_j * t[a][b];
+          }
+        if (update_j) add_gradient(j, volume_i, t);
+        continue;
       }
 
+      // soil particle s and wall particle w (Bui 2008): the wall particle moves with
+      // -(d_w/d_s) v_s, limited so that v_s - v_w = beta v_s, beta = min(1.5, 1 + d_w/d_s),
+      // and takes the stress and density of s
+      const int soil = wall_i ? j : i, wall = wall_i ? i : j;
+      if (!newton_pair && soil >= nlocal) continue;
+      const double sign = wall_i ? -1.0 : 1.0;    // x_s - x_w = sign * dx
+      double d[3], grad[3];
+      for (int a = 0; a < DIMENSION; a++) {
+        d[a] = sign * dx[a];
+        grad[a] = factor * d[a];    // dW/dx_s
+      }
+      const double *n = wall_normal[wall];
+      double ds = -wall_distance[wall];
+      for (int a = 0; a < DIMENSION; a++) ds += d[a] * n[a];
+      const double beta = ds > 0.0 ? MIN(1.5, 1.0 + wall_distance[wall] / ds) : 1.5;
+      const double *vs = vest[soil];
+      double vsw[3];
+      if (free_slip) {
+        double vn = 0.0;
+        for (int a = 0; a < DIMENSION; a++) vn += vs[a] * n[a];
+        for (int a = 0; a < DIMENSION; a++) vsw[a] = beta * vn * n[a];
+      } else {
+        for (int a = 0; a < DIMENSION; a++) vsw[a] = beta * vs[a];
+      }
       double vdotgrad = 0.0, vdotx = 0.0;
       for (int a = 0; a < DIMENSION; a++) {
-        vdotgrad += vij[a] * gradW[a];
-        vdotx += vij[a] * dx[a];
+        vdotgrad += vsw[a] * grad[a];
+        vdotx += vsw[a] * d[a];
       }
-      density_rate += mj * vdotgrad;
-
-      // Monaghan artificial viscosity, only for approaching pairs
+      const double mw = rmass[wall], rhos = rho[soil];
+      drho[soil] += mw * vdotgrad;
       double viscosity = 0.0;
       if (vdotx < 0.0) {
         const double mu = hij * vdotx / (r2 + 0.01 * hij * hij);
-        viscosity = (-viscosity_alpha * sound_speed_ij[itype][jtype] * mu +
-                     viscosity_beta * mu * mu) / (0.5 * (rhoi + rhoj));
+        viscosity = (-viscosity_alpha * c_ij * mu + viscosity_beta * mu * mu) / rhos;
       }
-
+      const double *ss = stress_over_rho2[soil];
+      const double mswall = rmass[soil] * mw;
       for (int a = 0; a < DIMENSION; a++) {
-        double sum = -viscosity * gradW[a];
-        for (int b = 0; b < DIMENSION; b++) {
-          const int k = voigt[a][b];
-          sum += (stress_i[k] + stress_j[k]) * gradW[b];
-        }
-        acceleration[a] += mj * sum;
+        double sum = -viscosity * grad[a];
+        for (int b = 0; b < DIMENSION; b++) sum += 2.0 * ss[voigt[a][b]] * grad[b];
+        f[soil][a] += mswall * sum;
       }
-
-      // velocity gradient g^ab = sum (m_j/rho_j) (v_j^a - v_i^a) dW/dx_i^b
-      const double volume = mj / rhoj;
+      double t[3][3];
       for (int a = 0; a < DIMENSION; a++)
-        for (int b = 0; b < DIMENSION; b++) gradient[a][b] -= volume * vij[a] * gradW[b];
+        for (int b = 0; b < DIMENSION; b++) t[a][b] = -vsw[a] * grad[b];
+      add_gradient(soil, mw / rhos, t);
     }
 
-    drho[i] += density_rate;
-    const double mi = rmass[i];
-    for (int a = 0; a < DIMENSION; a++) f[i][a] += mi * acceleration[a];
-    strain_rate[i][0] = gradient[0][0];
-    strain_rate[i][1] = gradient[1][1];
-    strain_rate[i][2] = gradient[2][2];
-    strain_rate[i][3] = 0.5 * (gradient[0][1] + gradient[1][0]);
-    strain_rate[i][4] = 0.5 * (gradient[0][2] + gradient[2][0]);
-    strain_rate[i][5] = 0.5 * (gradient[1][2] + gradient[2][1]);
-    spin[i][0] = 0.5 * (gradient[0][1] - gradient[1][0]);
-    spin[i][1] = 0.5 * (gradient[0][2] - gradient[2][0]);
-    spin[i][2] = 0.5 * (gradient[1][2] - gradient[2][1]);
+    drho[i] += drho_i;
+    for (int a = 0; a < DIMENSION; a++) f[i][a] += force_i[a];
+    add_gradient(i, 1.0, gradient_i);
   }
 }
 

@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPH_SOIL package for LAMMPS: pair_style sph/soil
 
-   One loop over a full neighbour list computes, for every soil particle,
+   One loop over a half neighbour list computes, for every soil particle,
    the density rate (continuity), the acceleration (momentum with Monaghan
    artificial viscosity) and the velocity gradient split into strain rate
    and spin (Bui et al. 2008; SPEC.md section 2). Wall particles are
@@ -56,6 +56,10 @@ class PairSPHSoil : public Pair {
   double max_h;                                    // largest smoothing length at init
   std::vector<std::unique_ptr<SPHSoil::ConstitutiveModel>> models;    // per atom type
   class AtomVecSPHSoil *avec;
+  int nmax_factors;
+  double **stress_over_rho2;    // sigma / rho^2 of owned and ghost atoms, this step
+  double *volume;               // m / rho
+  void prepare_atom_factors();
 
   void allocate();
   void set_type_material(int type, const SPHSoil::SoilMaterial &material);

@@ -30,22 +30,22 @@ std::string format(double value)
 // Under a rigid rotation x -> R x with dR/dt = W R this is exactly d(R sigma R^T)/dt.
 inline void jaumann_terms(const double stress[6], const double spin[3], double rate[6])
 {
-  const double sigma[3][3] = {{stress[0], stress[3], stress[4]},
-                              {stress[3], stress[1], stress[5]},
-                              {stress[4], stress[5], stress[2]}};
-  const double omega[3][3] = {{0.0, spin[0], spin[1]},
-                              {-spin[0], 0.0, spin[2]},
-                              {-spin[1], -spin[2], 0.0}};
-  double product[3][3];
-  for (int a = 0; a < 3; a++)
-    for (int b = 0; b < 3; b++)
-      product[a][b] = omega[a][0] * sigma[0][b] + omega[a][1] * sigma[1][b] + omega[a][2] * sigma[2][b];
-  rate[0] = 2.0 * product[0][0];
-  rate[1] = 2.0 * product[1][1];
-  rate[2] = 2.0 * product[2][2];
-  rate[3] = product[0][1] + product[1][0];
-  rate[4] = product[0][2] + product[2][0];
-  rate[5] = product[1][2] + product[2][1];
+  // M = W sigma written out (W has zeros on the diagonal: no multiplications by them)
+  const double sxx = stress[0], syy = stress[1], szz = stress[2];
+  const double sxy = stress[3], sxz = stress[4], syz = stress[5];
+  const double wxy = spin[0], wxz = spin[1], wyz = spin[2];
+  const double m00 = wxy * sxy + wxz * sxz;
+  const double m11 = -wxy * sxy + wyz * syz;
+  const double m22 = -wxz * sxz - wyz * syz;
+  const double m01 = wxy * syy + wxz * syz, m10 = -wxy * sxx + wyz * sxz;
+  const double m02 = wxy * syz + wxz * szz, m20 = -wxz * sxx - wyz * sxy;
+  const double m12 = -wxy * sxz + wyz * szz, m21 = -wxz * sxy - wyz * syy;
+  rate[0] = 2.0 * m00;
+  rate[1] = 2.0 * m11;
+  rate[2] = 2.0 * m22;
+  rate[3] = m01 + m10;
+  rate[4] = m02 + m20;
+  rate[5] = m12 + m21;
 }
 
 }    // namespace

@@ -68,6 +68,18 @@ template <class Client> inline void request_full_neighbor_list(Neighbor *neighbo
 #endif
 }
 
+// Request the default (half) neighbour list for a pair style.
+template <class Client> inline void request_half_neighbor_list(Neighbor *neighbor, Client *client,
+                                                                 int instance = 0)
+{
+#if SPH_SOIL_NEW_LAMMPS_API
+  (void) instance;
+  neighbor->add_request(client);
+#else
+  neighbor->request(client, instance);
+#endif
+}
+
 // Request an occasional full neighbour list for a fix or command (built on demand).
 template <class Client> inline void request_occasional_full_list(Neighbor *neighbor, Client *client)
 {
