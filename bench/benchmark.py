@@ -1,0 +1,95 @@
+#!/usr/bin/python3
+"""SPH_SOIL benchmark: particle-steps per second per core, side by side with LAMMPS's own
+sph/taitwater and smd/ulsph on the same 2D layout (in.bench_*), as ratios from one run.
+
+    bench/benchmark.py [--lmp build/lmp] [--repeat 1] [--json FILE] [--bars]
+
+Each input runs on 1 MPI rank; the best of --repeat runs counts. --bars also times the short
+aluminium-bar example on all cores. Prints JSON.
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+STYLES = {'sph_soil': 'in.bench_sph_soil', 'sph_taitwater': 'in.bench_taitwater',
+          'smd_ulsph': 'in.bench_ulsph'}
+
+
+def run(lmp, infile, workdir, np=1, extra=()):
+    log = os.path.join(workdir, 'log.bench')
+    cmd = ['mpirun', '-np', str(np), lmp, '-in', infile, '-log', log, '-screen', 'none'] + list(extra)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
+    subprocess.run(cmd, cwd=workdir, env=env, check=True)
+    text = open(log).read()
+    loop = re.findall(r'Loop time of (\S+) on (\d+) procs for (\d+) steps with (\d+) atoms', text)[-1]
+    seconds, procs, steps, atoms = float(loop[0]), int(loop[1]), int(loop[2]), int(loop[3])
+    neighs = re.findall(r'Ave neighs/atom = (\S+)', text)
+    pair = re.findall(r'^Pair\s+\|\s+\S+\s+\|\s+(\S+)', text, re.M)
+    return {'seconds': seconds, 'procs': procs, 'steps': steps, 'atoms': atoms,
+            'particle_steps_per_second_per_core': atoms * steps / seconds / procs,
+            'neighbours_per_atom': float(neighs[-1]) if neighs else None,
+            'pair_fraction': float(pair[-1]) / seconds if pair else None}
+
+
+def machine():
+    model = ''
+    try:
+        for line in open('/proc/cpuinfo'):
+            if line.startswith('model name'):
+                model = line.split(':', 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return {'cores': os.cpu_count(), 'cpu': model}
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument('--lmp', default=os.path.join(ROOT, 'build', 'lmp'))
+    p.add_argument('--repeat', type=int, default=1)
+    p.add_argument('--json', default=None)
+    p.add_argument('--bars', action='store_true', help='also time the short aluminium-bar example')
+    a = p.parse_args()
+    lmp = os.path.abspath(a.lmp)
+
+    results = {}
+    with tempfile.TemporaryDirectory() as work:
+        for name, infile in STYLES.items():
+            best = None
+            for _ in range(a.repeat):
+                r = run(lmp, os.path.join(HERE, infile), work)
+                if best is None or r['seconds'] < best['seconds']:
+                    best = r
+            results[name] = best
+            print(f'benchmark: {name}: {best["particle_steps_per_second_per_core"]:.3g} '
+                  f'particle-steps/s/core', file=sys.stderr)
+        if a.bars:
+            ncores = os.cpu_count() or 1
+            r = run(lmp, os.path.join(ROOT, 'examples', 'aluminium_bars', 'in.aluminium_bars'), work,
+                    np=ncores, extra=['-var', 'short', '1'])
+            r['note'] = 'short mode (300 steps); atoms include wall particles'
+            results['aluminium_bars_short'] = r
+
+    ours = results['sph_soil']['particle_steps_per_second_per_core']
+    summary = {
+        'layout': '200 x 100 square lattice, support radius 2.4 spacings, 500 steps, 1 rank',
+        'machine': machine(),
+        'results': results,
+        'ratio_sph_soil_to_sph_taitwater': ours / results['sph_taitwater']['particle_steps_per_second_per_core'],
+        'ratio_sph_soil_to_smd_ulsph': ours / results['smd_ulsph']['particle_steps_per_second_per_core'],
+    }
+    text = json.dumps(summary, indent=2)
+    print(text)
+    if a.json:
+        with open(a.json, 'w') as f:
+            f.write(text + '\n')
+
+
+if __name__ == '__main__':
+    main()
