@@ -1,0 +1,149 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package: kernel gradient error of a split, instability conditions
+------------------------------------------------------------------------- */
+
+#include "soil_refine_error.h"
+
+#include "soil_kernel.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace SPHSoil;
+
+namespace {
+
+// 4-point Gauss-Legendre on [-1, 1]
+const double GAUSS_X[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
+                           0.8611363115940526};
+const double GAUSS_W[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                           0.3478548451374538};
+
+struct Split {
+  int dimension;
+  double eps, alpha, ra;
+  double h_parent, h_daughter;    // symmetrized with h(x)
+  int ndaughters;
+  double daughters[8][3];
+};
+
+Split make_split(int dimension, double eps, double alpha, double ra, NeighbourSmoothing neighbours)
+{
+  Split s;
+  s.dimension = dimension;
+  s.eps = eps;
+  s.alpha = alpha;
+  s.ra = ra;
+  const double hp = ra, hd = alpha * ra;
+  const double hx = neighbours == NeighbourSmoothing::UNREFINED ? hp : hd;
+  s.h_parent = 0.5 * (hp + hx);
+  s.h_daughter = 0.5 * (hd + hx);
+  s.ndaughters = dimension == 3 ? 8 : 4;
+  for (int d = 0; d < s.ndaughters; d++)
+    for (int k = 0; k < 3; k++)
+      s.daughters[d][k] = k < dimension ? ((d >> k) & 1 ? 0.5 : -0.5) * eps : 0.0;
+  return s;
+}
+
+double difference_squared(const Split &s, const double *x)
+{
+  double diff[3] = {0.0, 0.0, 0.0};
+  const int D = s.dimension;
+  const double r0 = std::sqrt(x[0] * x[0] + x[1] * x[1] + (D == 3 ? x[2] * x[2] : 0.0));
+  const double fp = CubicSpline::gradient_factor(D, r0, s.h_parent);
+  for (int a = 0; a < D; a++) diff[a] = fp * x[a];
+  const double lambda = 1.0 / s.ndaughters;
+  for (int d = 0; d < s.ndaughters; d++) {
+    double dx[3], r2 = 0.0;
+    for (int a = 0; a < D; a++) {
+      dx[a] = x[a] - s.daughters[d][a];
+      r2 += dx[a] * dx[a];
+    }
+    const double fd = lambda * CubicSpline::gradient_factor(D, std::sqrt(r2), s.h_daughter);
+    for (int a = 0; a < D; a++) diff[a] -= fd * dx[a];
+  }
+  double sum = 0.0;
+  for (int a = 0; a < D; a++) sum += diff[a] * diff[a];
+  return sum;
+}
+
+// the pattern is symmetric under x^a -> -x^a for each a: integrate over [0, L]^D, times 2^D
+double integrate(const Split &s, int cells)
+{
+  const double L = std::max(2.0 * s.h_parent, 0.5 * s.eps + 2.0 * s.h_daughter);
+  const double width = L / cells;
+  const int D = s.dimension;
+  double total = 0.0;
+  double x[3] = {0.0, 0.0, 0.0};
+  const int nz = D == 3 ? cells : 1, gz = D == 3 ? 4 : 1;
+  for (int ci = 0; ci < cells; ci++)
+    for (int gi = 0; gi < 4; gi++) {
+      x[0] = (ci + 0.5 + 0.5 * GAUSS_X[gi]) * width;
+      for (int cj = 0; cj < cells; cj++)
+        for (int gj = 0; gj < 4; gj++) {
+          x[1] = (cj + 0.5 + 0.5 * GAUSS_X[gj]) * width;
+          const double wij = GAUSS_W[gi] * GAUSS_W[gj];
+          for (int ck = 0; ck < nz; ck++)
+            for (int gk = 0; gk < gz; gk++) {
+              double w = wij;
+              if (D == 3) {
+                x[2] = (ck + 0.5 + 0.5 * GAUSS_X[gk]) * width;
+                w *= GAUSS_W[gk];
+              }
+              total += w * difference_squared(s, x);
+            }
+        }
+    }
+  const double jacobian = std::pow(0.5 * width, D);
+  return total * jacobian * std::pow(2.0, D);
+}
+
+}    // namespace
+
+double SPHSoil::gradient_difference_squared(int dimension, double separation,
+                                            double smoothing_ratio, double r_a,
+                                            NeighbourSmoothing neighbours, const double *x)
+{
+  return difference_squared(make_split(dimension, separation, smoothing_ratio, r_a, neighbours), x);
+}
+
+double SPHSoil::kernel_gradient_error_fixed(int dimension, double separation, double smoothing_ratio,
+                                            double r_a, NeighbourSmoothing neighbours, int cells)
+{
+  return integrate(make_split(dimension, separation, smoothing_ratio, r_a, neighbours), cells);
+}
+
+KernelGradientError SPHSoil::kernel_gradient_error(int dimension, double separation,
+                                                   double smoothing_ratio, double r_a,
+                                                   NeighbourSmoothing neighbours,
+                                                   double relative_tolerance, int max_cells)
+{
+  const Split s = make_split(dimension, separation, smoothing_ratio, r_a, neighbours);
+  // the integrand has kinks (W''' jumps) on spheres around every particle: the composite rule
+  // converges algebraically, so the change under doubling the cells bounds the error
+  int cells = dimension == 3 ? 8 : 16;
+  double previous = integrate(s, cells);
+  KernelGradientError result{previous, HUGE_VAL, cells};
+  while (cells < max_cells) {
+    cells *= 2;
+    const double current = integrate(s, cells);
+    result = {current, std::fabs(current - previous), cells};
+    // E = 0 exactly for coinciding daughters: stop on an absolute floor too
+    if (result.error_estimate <= relative_tolerance * std::fabs(current) ||
+        result.error_estimate < 1.0e-14)
+      break;
+    previous = current;
+  }
+  return result;
+}
+
+InstabilityConditions SPHSoil::instability_conditions(double separation, double smoothing_ratio,
+                                                      double r_a, double neighbour_distance)
+{
+  InstabilityConditions c;
+  const double unstable_radius = 2.0 / 3.0 * smoothing_ratio * r_a;    // 2 h_d / 3 in d_ref
+  c.daughters_too_close = unstable_radius - separation > 0.0;
+  c.refined_neighbours = neighbour_distance < unstable_radius + separation;
+  c.unrefined_neighbour = neighbour_distance < (1.0 + smoothing_ratio) * r_a / 3.0 + 0.5 * separation;
+  return c;
+}

@@ -1,0 +1,68 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package: choosing refinement parameters (pure, no LAMMPS).
+
+   The kernel gradient error of one split and the instability conditions of
+   SPEC.md section 5 (the paper's Fig. 1). A parent p at the origin is
+   replaced by M = 2^D daughters at the corners of a square (cube) of side
+   eps_r * d_p with smoothing length alpha_r * h_p and mass m_p / M:
+
+     E = integral sum_a ( dW_p(x)/dx^a - sum_d (1/M) dW_d(x)/dx^a )^2 dx
+
+   where a particle seen from x with smoothing length h(x) uses the
+   symmetrized (h_particle + h(x))/2; case (a) h(x) = h_p, case (b)
+   h(x) = alpha_r h_p. Lengths are in units of the parent's spacing
+   (d_p = 1, h_p = r_a), so E is in units of 1/d_p^2.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SOIL_REFINE_ERROR_H
+#define LMP_SOIL_REFINE_ERROR_H
+
+namespace SPHSoil {
+
+enum class NeighbourSmoothing {
+  UNREFINED,    // case (a): h(x) = h_p
+  REFINED       // case (b): h(x) = alpha_r h_p
+};
+
+struct KernelGradientError {
+  double value;             // E
+  double error_estimate;    // |E(n cells) - E(n/2 cells)| of the last refinement of the quadrature
+  int cells;                // cells per dimension of the quadrature that was accepted
+};
+
+// E by composite Gauss-Legendre quadrature (4 points per cell and dimension) over the
+// union of the supports, exploiting the pattern's mirror symmetries; the number of cells
+// doubles until the relative change is below relative_tolerance (or max_cells is reached).
+KernelGradientError kernel_gradient_error(int dimension, double separation, double smoothing_ratio,
+                                          double r_a, NeighbourSmoothing neighbours,
+                                          double relative_tolerance = 1.0e-5, int max_cells = 256);
+
+// E on a fixed grid of cells per dimension (for convergence studies).
+double kernel_gradient_error_fixed(int dimension, double separation, double smoothing_ratio,
+                                   double r_a, NeighbourSmoothing neighbours, int cells);
+
+// sum_a of the squared difference of the gradients at one point x (length `dimension`)
+double gradient_difference_squared(int dimension, double separation, double smoothing_ratio,
+                                   double r_a, NeighbourSmoothing neighbours, const double *x);
+
+// Swegle's criterion for the cubic spline (W'' < 0 for r < 2h/3) applied to a split, for a
+// refined particle i and a neighbour j at distance d_ij = neighbour_distance * d_ref:
+struct InstabilityConditions {
+  bool daughters_too_close;        // Cond. 1: 0 < (2/3) alpha_r r_a - eps_r
+  bool refined_neighbours;         // Cond. 2: d_ij/d_ref < (2/3) alpha_r r_a + eps_r
+  bool unrefined_neighbour;        // Cond. 3: d_ij/d_ref < (1 + alpha_r) r_a / 3 + eps_r / 2
+  bool any() const { return daughters_too_close || refined_neighbours || unrefined_neighbour; }
+};
+
+InstabilityConditions instability_conditions(double separation, double smoothing_ratio, double r_a,
+                                             double neighbour_distance);
+
+inline bool stable_refinement(double separation, double smoothing_ratio, double r_a,
+                              double neighbour_distance)
+{
+  return !instability_conditions(separation, smoothing_ratio, r_a, neighbour_distance).any();
+}
+
+}    // namespace SPHSoil
+
+#endif

@@ -1,0 +1,102 @@
+// Kernel gradient error of one split and the instability conditions (SPEC.md section 5).
+#include "soil_refine_error.h"
+
+#include "gtest/gtest.h"
+
+#include <cmath>
+
+using namespace SPHSoil;
+using Case = NeighbourSmoothing;
+
+TEST(RefineError, VanishesWhenDaughtersCoincideWithTheParent)
+{
+  for (int dim : {2, 3}) {
+    // (3D on a fixed, coarser quadrature: the adaptive one would take seconds)
+    const int cells = dim == 3 ? 16 : 64;
+    const double zero = kernel_gradient_error_fixed(dim, 0.0, 1.0, 1.2, Case::UNREFINED, cells);
+    EXPECT_LT(zero, 1e-14) << "dimension " << dim;
+    EXPECT_LT(kernel_gradient_error(2, 0.0, 1.0, 1.2, Case::UNREFINED).value, 1e-14);
+    // and grows from zero as the daughters move apart
+    const double small = kernel_gradient_error_fixed(dim, 0.01, 1.0, 1.2, Case::UNREFINED, cells);
+    const double large = kernel_gradient_error_fixed(dim, 0.3, 1.0, 1.2, Case::UNREFINED, cells);
+    EXPECT_GT(small, 0.0);
+    EXPECT_GT(large, 100.0 * small);
+  }
+}
+
+TEST(RefineError, PositiveForRealSplits)
+{
+  for (auto c : {Case::UNREFINED, Case::REFINED}) {
+    EXPECT_GT(kernel_gradient_error(2, 0.5, 0.5, 1.2, c).value, 1e-3);
+    EXPECT_GT(kernel_gradient_error(2, 0.55, 0.7, 1.2, c).value, 1e-4);
+  }
+  EXPECT_GT(kernel_gradient_error_fixed(3, 0.5, 0.5, 1.2, Case::UNREFINED, 16), 1e-3);
+  // coinciding daughters with a smaller h are not the parent either
+  EXPECT_GT(kernel_gradient_error(2, 0.0, 0.5, 1.2, Case::UNREFINED).value, 1e-3);
+}
+
+TEST(RefineError, QuadratureConverges)
+{
+  // refining the quadrature changes E by less than 0.1% (here far less)
+  const double points[3][2] = {{0.5, 0.5}, {0.3, 0.7}, {0.7, 0.3}};
+  for (const auto &p : points)
+    for (auto c : {Case::UNREFINED, Case::REFINED}) {
+      const double coarse = kernel_gradient_error_fixed(2, p[0], p[1], 1.2, c, 32);
+      const double fine = kernel_gradient_error_fixed(2, p[0], p[1], 1.2, c, 128);
+      EXPECT_NEAR(coarse, fine, 1e-3 * fine) << p[0] << " " << p[1];
+      const auto adaptive = kernel_gradient_error(2, p[0], p[1], 1.2, c);
+      EXPECT_NEAR(adaptive.value, fine, 1e-4 * fine);
+      EXPECT_LE(adaptive.error_estimate, 1e-5 * adaptive.value);
+    }
+  const double coarse3 = kernel_gradient_error_fixed(3, 0.5, 0.5, 1.2, Case::UNREFINED, 8);
+  const double fine3 = kernel_gradient_error_fixed(3, 0.5, 0.5, 1.2, Case::UNREFINED, 32);
+  EXPECT_NEAR(coarse3, fine3, 1e-3 * fine3);
+}
+
+TEST(RefineError, DaughterGradientsTendToTheParentsGradient)
+{
+  // at points inside and around the support, the summed daughter gradient approaches the
+  // parent's as eps_r -> 0 and alpha_r -> 1, in 2D and 3D
+  const double x[3][3] = {{0.3, 0.2, 0.1}, {1.1, -0.4, 0.5}, {-1.7, 0.9, -0.3}};
+  for (int dim : {2, 3})
+    for (const auto &point : x) {
+      double previous = HUGE_VAL, first = 0.0;
+      for (double t : {0.2, 0.1, 0.05, 0.01}) {
+        const double d = gradient_difference_squared(dim, t, 1.0 - t, 1.2, Case::UNREFINED, point);
+        EXPECT_LT(d, previous) << "dimension " << dim << " t " << t;
+        if (t == 0.2) first = d;
+        previous = d;
+      }
+      // second order in t: (0.01 / 0.2)^2 = 2.5e-3
+      EXPECT_LT(previous, 1e-2 * first);
+    }
+}
+
+TEST(RefineError, InstabilityConditionsByHand)
+{
+  // the paper's recommendation (0.5, 0.5) is stable for d_ij = d_ref, r_a = 1.2:
+  // 2/3 * 0.5 * 1.2 = 0.4 < 0.5; 0.4 + 0.5 = 0.9 < 1; (1.5 * 1.2)/3 + 0.25 = 0.85 < 1
+  auto c = instability_conditions(0.5, 0.5, 1.2, 1.0);
+  EXPECT_FALSE(c.daughters_too_close);
+  EXPECT_FALSE(c.refined_neighbours);
+  EXPECT_FALSE(c.unrefined_neighbour);
+  EXPECT_TRUE(stable_refinement(0.5, 0.5, 1.2, 1.0));
+  // (0.55, 0.7) is not: 2/3 * 0.7 * 1.2 = 0.56 > 0.55 and 0.56 + 0.55 = 1.11 > 1
+  c = instability_conditions(0.55, 0.7, 1.2, 1.0);
+  EXPECT_TRUE(c.daughters_too_close);
+  EXPECT_TRUE(c.refined_neighbours);
+  EXPECT_FALSE(c.unrefined_neighbour);    // 1.7 * 1.2 / 3 + 0.275 = 0.955 < 1
+  EXPECT_FALSE(stable_refinement(0.55, 0.7, 1.2, 1.0));
+  // compressed neighbours (0.85 d_ref) make (0.5, 0.5) unstable through Cond. 2 (0.9 > 0.85)
+  c = instability_conditions(0.5, 0.5, 1.2, 0.85);
+  EXPECT_FALSE(c.daughters_too_close);
+  EXPECT_TRUE(c.refined_neighbours);
+  EXPECT_FALSE(c.unrefined_neighbour);
+  // Cond. 2 is the more restrictive of 2 and 3 wherever Cond. 1 is not violated
+  for (double eps = 0.2; eps <= 0.8; eps += 0.05)
+    for (double alpha = 0.2; alpha <= 0.8; alpha += 0.05)
+      for (double d : {1.0, 0.85}) {
+        const auto k = instability_conditions(eps, alpha, 1.2, d);
+        if (!k.daughters_too_close && k.unrefined_neighbour) EXPECT_TRUE(k.refined_neighbours);
+      }
+}
