@@ -257,7 +257,22 @@ double FixSPHSoil::stable_timestep()
 
 void FixSPHSoil::end_of_step()
 {
-  if (cfl == 0.0) return;
+  if (cfl > 0.0) adapt_timestep();
+}
+
+void FixSPHSoil::particles_refined(const char *who)
+{
+  if (cfl > 0.0) return adapt_timestep();
+  const double limit = stable_timestep();
+  if (update->dt > limit)
+    error->all(FLERR, "{}: after splitting at step {} the timestep {:.6g} exceeds the stability "
+                      "limit {:.6g} = {} * min(h) / c_p; use 'cfl 0.1' in fix sph/soil (adaptive "
+                      "step) or a timestep <= {:.6g}", who, update->ntimestep, update->dt, limit,
+               stable_cfl, limit);
+}
+
+void FixSPHSoil::adapt_timestep()
+{
   const double dt = stable_timestep();
   if (dt == update->dt) return;
   update->update_time();

@@ -43,6 +43,10 @@ class FixSPHSoil : public Fix {
   void post_run() override;
   double compute_vector(int) override;
 
+  // after particles were split (smaller h): adapt the time step (cfl), or stop with an error
+  // if the user's fixed step is now above the stability limit
+  void particles_refined(const char *who);
+
   // the rates of the last step travel with the atoms, into restart files and the next run
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -86,6 +90,7 @@ class FixSPHSoil : public Fix {
   void update_stress(int i);
   void check_state(int i);
   double stable_timestep();
+  void adapt_timestep();
 };
 
 }    // namespace LAMMPS_NS

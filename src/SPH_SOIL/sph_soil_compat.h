@@ -23,6 +23,10 @@
 #define SPH_SOIL_NEW_LAMMPS_API (LAMMPS_VERSION_NUMBER >= 20220623)
 
 #include "comm.h"
+#include "command.h"
+#include "domain.h"
+#include "region.h"
+#include "neigh_list.h"
 #include <string>
 #include <vector>
 #include "neighbor.h"
@@ -92,6 +96,47 @@ template <class Client> inline void request_occasional_full_list(Neighbor *neigh
   neighbor->requests[irequest]->half = 0;
   neighbor->requests[irequest]->full = 1;
   neighbor->requests[irequest]->occasional = 1;
+#endif
+}
+
+// A command's occasional full list: request before lmp->init(), find after it.
+// Returns a handle for command_neighbor_list().
+inline int request_command_full_list(Neighbor *neighbor, Command *command, const char *style)
+{
+#if SPH_SOIL_NEW_LAMMPS_API
+  neighbor->add_request(command, style, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+  return 0;
+#else
+  int irequest = neighbor->request(command);
+  neighbor->requests[irequest]->pair = 0;
+  neighbor->requests[irequest]->command = 1;
+  neighbor->requests[irequest]->half = 0;
+  neighbor->requests[irequest]->full = 1;
+  neighbor->requests[irequest]->occasional = 1;
+  neighbor->requests[irequest]->command_style = style;
+  return irequest;
+#endif
+}
+
+inline NeighList *command_neighbor_list(Neighbor *neighbor, Command *command, int handle)
+{
+#if SPH_SOIL_NEW_LAMMPS_API
+  (void) handle;
+  return neighbor->find_list(command);
+#else
+  (void) command;
+  return neighbor->lists[handle];
+#endif
+}
+
+// A region by its ID, nullptr if there is none (the index-based lookup was replaced in 2022).
+inline Region *find_region(Domain *domain, const std::string &id)
+{
+#if LAMMPS_VERSION_NUMBER >= 20220915
+  return domain->get_region_by_id(id);
+#else
+  const int index = domain->find_region(id);
+  return index < 0 ? nullptr : domain->regions[index];
 #endif
 }
 

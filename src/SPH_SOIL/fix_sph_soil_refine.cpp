@@ -1,0 +1,253 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package for LAMMPS: fix sph/soil/refine
+------------------------------------------------------------------------- */
+
+#include "fix_sph_soil_refine.h"
+
+#include "atom.h"
+#include "atom_vec_sph_soil.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_sph_soil.h"
+#include "group.h"
+#include "force.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "pair_sph_soil.h"
+#include "region.h"
+#include "soil_constitutive.h"
+#include "soil_refine_error.h"
+#include "sph_soil_compat.h"
+#include "sph_soil_splitter.h"
+#include "update.h"
+#include "utils.h"
+
+#include <cstring>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+const char *const STYLE = "Fix sph/soil/refine";
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), threshold(0.05), maxlevel(1), region(nullptr), list(nullptr),
+    integrator(nullptr), parameters_reported(false), last_split(0), last_split_step(-1),
+    total_split(0)
+{
+  if (narg < 4) error->all(FLERR, "Illegal fix sph/soil/refine command: expected 'fix ID group sph/soil/refine N keyword value ...'");
+  if (!atom->style_match("sph/soil")) error->all(FLERR, "Fix sph/soil/refine requires atom_style sph/soil");
+
+  nevery = utils::inumeric(FLERR, arg[3], false, lmp);
+  if (nevery < 1) error->all(FLERR, "Illegal fix sph/soil/refine N {}: must be >= 1", nevery);
+
+  splitter.reset(new SPHSoilSplitter(lmp, STYLE));
+  for (int iarg = 4; iarg < narg; iarg += 2) {
+    const std::string keyword = arg[iarg];
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Illegal fix sph/soil/refine command: keyword {} needs a value", keyword);
+    const char *value = arg[iarg + 1];
+    if (keyword == "threshold") {
+      threshold = utils::numeric(FLERR, value, false, lmp);
+      if (!(threshold >= 0.0)) error->all(FLERR, "Illegal fix sph/soil/refine threshold {}: must be >= 0", threshold);
+    } else if (keyword == "separation") {
+      splitter->separation = utils::numeric(FLERR, value, false, lmp);
+      if (!(splitter->separation > 0.0 && splitter->separation < 1.0))
+        error->all(FLERR, "Illegal fix sph/soil/refine separation {}: must be in (0, 1)", splitter->separation);
+    } else if (keyword == "smoothing") {
+      splitter->smoothing_ratio = utils::numeric(FLERR, value, false, lmp);
+      if (!(splitter->smoothing_ratio > 0.0 && splitter->smoothing_ratio < 1.0))
+        error->all(FLERR, "Illegal fix sph/soil/refine smoothing {}: must be in (0, 1)", splitter->smoothing_ratio);
+    } else if (keyword == "dref") {
+      splitter->reference_spacing = utils::numeric(FLERR, value, false, lmp);
+      if (!(splitter->reference_spacing > 0.0))
+        error->all(FLERR, "Illegal fix sph/soil/refine dref {}: must be > 0", splitter->reference_spacing);
+    } else if (keyword == "maxlevel") {
+      maxlevel = utils::inumeric(FLERR, value, false, lmp);
+      if (maxlevel < 1 || maxlevel > 30) error->all(FLERR, "Illegal fix sph/soil/refine maxlevel {}: must be in 1 to 30", maxlevel);
+    } else if (keyword == "region") {
+      region_id = value;
+      if (!SphSoilCompat::find_region(domain, region_id))
+        error->all(FLERR, "Fix sph/soil/refine region {} does not exist", region_id);
+    } else {
+      error->all(FLERR, "Illegal fix sph/soil/refine keyword {} (allowed: threshold, separation, "
+                        "smoothing, dref, maxlevel, region)", keyword);
+    }
+  }
+
+  // global output: split this step, total split, particles of the group per level 0..maxlevel
+  vector_flag = 1;
+  size_vector = 2 + maxlevel + 1;
+  global_freq = 1;
+  extvector = 0;
+  restart_global = 1;
+  force_reneighbor = 1;
+  next_reneighbor = -1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixSPHSoilRefine::~FixSPHSoilRefine() = default;
+
+int FixSPHSoilRefine::setmask()
+{
+  return END_OF_STEP;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::init()
+{
+  splitter->init();
+  if (!region_id.empty()) {
+    region = SphSoilCompat::find_region(domain, region_id);
+    if (!region) error->all(FLERR, "Fix sph/soil/refine region {} does not exist", region_id);
+  }
+
+  integrator = nullptr;
+  for (int ifix = 0; ifix < modify->nfix; ifix++)
+    if (strcmp(modify->fix[ifix]->style, "sph/soil") == 0)
+      integrator = dynamic_cast<FixSPHSoil *>(modify->fix[ifix]);
+  if (!integrator) error->all(FLERR, "Fix sph/soil/refine requires fix sph/soil");
+
+  // wall particles carry the wall geometry; splitting them would break it
+  auto pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));
+  bigint walls = 0, all_walls = 0;
+  int wall_type = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && pair->is_wall_type(atom->type[i])) {
+      walls++;
+      wall_type = atom->type[i];
+    }
+  MPI_Allreduce(&walls, &all_walls, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all_walls > 0) {
+    int any_type = 0;
+    MPI_Allreduce(&wall_type, &any_type, 1, MPI_INT, MPI_MAX, world);
+    error->all(FLERR, "Fix sph/soil/refine: group {} contains {} wall particles (e.g. type {}); "
+                      "refine soil particles only", group->names[igroup], all_walls, any_type);
+  }
+
+  SphSoilCompat::request_occasional_full_list(neighbor, this);
+}
+
+void FixSPHSoilRefine::init_list(int, NeighList *ptr)
+{
+  list = ptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::setup(int)
+{
+  if (!parameters_reported) report_parameters();
+  parameters_reported = true;
+}
+
+/* ----------------------------------------------------------------------
+   log the kernel-gradient error of one split and warn about unstable parameters
+   (doc/refinement_parameters.rst)
+------------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::report_parameters()
+{
+  // r_a = h / d of the group (largest: the conditions are strictest for it)
+  double ra = 0.0, ra_all = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) ra = MAX(ra, splitter->smoothing_over_spacing(i));
+  MPI_Allreduce(&ra, &ra_all, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (comm->me != 0 || !(ra_all > 0.0)) return;
+
+  using namespace SPHSoil;
+  const double eps = splitter->separation, alpha = splitter->smoothing_ratio;
+  const int dimension = domain->dimension;
+  const double error_a = kernel_gradient_error(dimension, eps, alpha, ra_all, NeighbourSmoothing::UNREFINED).value;
+  const double error_b = kernel_gradient_error(dimension, eps, alpha, ra_all, NeighbourSmoothing::REFINED).value;
+  auto describe = [&](double distance) {
+    const auto c = instability_conditions(eps, alpha, ra_all, distance);
+    if (!c.any()) return std::string("stable");
+    std::string s = "unstable (Cond.";
+    if (c.daughters_too_close) s += " 1";
+    if (c.refined_neighbours) s += " 2";
+    if (c.unrefined_neighbour) s += " 3";
+    return s + ")";
+  };
+  utils::logmesg(lmp, "fix sph/soil/refine: separation {} smoothing {} with h/d = {:.4g}: kernel "
+                      "gradient error E_a = {:.4g}, E_b = {:.4g} (1/d^{}); d_ij/d_ref = 1.0: {}, "
+                      "0.85: {}\n", eps, alpha, ra_all, error_a, error_b, dimension,
+                 describe(1.0), describe(0.85));
+  if (!stable_refinement(eps, alpha, ra_all, 1.0))
+    error->warning(FLERR, "Fix sph/soil/refine: separation {} and smoothing {} (h/d = {:.4g}) are "
+                          "in the unstable region for d_ij/d_ref = 1.0 ({}): expect clumps and "
+                          "cracks under compression; see doc/refinement_parameters.rst",
+                   eps, alpha, ra_all, describe(1.0));
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::end_of_step()
+{
+  auto avec = dynamic_cast<AtomVecSPHSoil *>(atom->avec);
+  if (region) region->prematch();
+  std::vector<int> parents;
+  const int nlocal = atom->nlocal;
+  double **x = atom->x;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || avec->level[i] >= maxlevel) continue;
+    if (!(SPHSoil::strain_measure(avec->total_strain[i]) > threshold)) continue;
+    if (region && !region->match(x[i][0], x[i][1], x[i][2])) continue;
+    parents.push_back(i);
+  }
+  bigint candidates = parents.size(), all_candidates = 0;
+  MPI_Allreduce(&candidates, &all_candidates, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  last_split_step = update->ntimestep;
+  last_split = 0;
+  if (all_candidates == 0) return;
+
+  neighbor->build_one(list);
+  last_split = splitter->split(parents, list);
+  total_split += last_split;
+  next_reneighbor = update->ntimestep + 1;
+  integrator->particles_refined(STYLE);
+}
+
+/* ----------------------------------------------------------------------
+   1: particles split at this step, 2: split since the fix was defined,
+   3..: particles of the group at level 0, 1, ..., maxlevel (the last counts deeper levels too)
+------------------------------------------------------------------------- */
+
+double FixSPHSoilRefine::compute_vector(int n)
+{
+  if (n == 0) return last_split_step == update->ntimestep ? (double) last_split : 0.0;
+  if (n == 1) return (double) total_split;
+  const int wanted = n - 2;
+  auto avec = dynamic_cast<AtomVecSPHSoil *>(atom->avec);
+  bigint count = 0, all = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) {
+      const int level = MIN(avec->level[i], maxlevel);
+      if (level == wanted) count++;
+    }
+  MPI_Allreduce(&count, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  return (double) all;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  double data[1] = {(double) total_split};
+  int size = sizeof(data);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(data, sizeof(double), 1, fp);
+}
+
+void FixSPHSoilRefine::restart(char *buf)
+{
+  total_split = (bigint) reinterpret_cast<double *>(buf)[0];
+}

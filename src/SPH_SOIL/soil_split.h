@@ -1,0 +1,76 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package: the geometry of one particle split and the CSPM
+   interpolation of the daughters' state (pure, no LAMMPS). SPEC.md section 5.
+
+   A parent of spacing d_p is replaced by M = 2^D daughters at the corners of
+   an axis-aligned square (cube) of side separation * d_p centred on it, with
+   mass m_p / M, the parent's velocity, smoothing length smoothing_ratio * h_p.
+   Every other state variable is interpolated at the daughter's position by
+   the corrected SPH (CSPM) average over the parent's neighbours:
+     f(x_d) = sum_j V_j f_j W(x_d - x_j, h_j) / sum_j V_j W(x_d - x_j, h_j),
+   V_j = m_j / rho_j, which reproduces a constant field exactly.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SOIL_SPLIT_H
+#define LMP_SOIL_SPLIT_H
+
+#include "soil_kernel.h"
+
+#include <cmath>
+
+namespace SPHSoil {
+
+constexpr int MAX_DAUGHTERS = 8;
+
+inline int daughter_count(int dimension)
+{
+  return dimension == 3 ? 8 : 4;
+}
+
+// Offsets of the daughters from the parent: (+-s/2, +-s/2[, +-s/2]) with s = separation * d_p,
+// in a fixed order (x fastest) so that daughter k is the same on every rank.
+inline int daughter_offsets(int dimension, double separation, double parent_spacing,
+                            double offsets[MAX_DAUGHTERS][3])
+{
+  const int count = daughter_count(dimension);
+  const double half = 0.5 * separation * parent_spacing;
+  for (int k = 0; k < count; k++) {
+    offsets[k][0] = (k & 1) ? half : -half;
+    offsets[k][1] = (k & 2) ? half : -half;
+    offsets[k][2] = dimension == 3 ? ((k & 4) ? half : -half) : 0.0;
+  }
+  return count;
+}
+
+// The spacing of a particle of refinement level `level`: d_ref halves at each level.
+inline double level_spacing(double reference_spacing, int level)
+{
+  return std::ldexp(reference_spacing, -level);
+}
+
+// Running CSPM sums for one point: add neighbours one by one, then divide.
+template <int NVALUES> struct CspmSum {
+  double weight = 0.0;
+  double values[NVALUES] = {};
+
+  // a neighbour of volume V at distance r with smoothing length h and state f[NVALUES]
+  void add(int dimension, double volume, double r, double h, const double *f)
+  {
+    const double w = volume * CubicSpline::value(dimension, r, h);
+    if (w == 0.0) return;
+    weight += w;
+    for (int k = 0; k < NVALUES; k++) values[k] += w * f[k];
+  }
+  // false when no neighbour reaches the point (then `out` is left unchanged)
+  bool result(double *out) const
+  {
+    if (!(weight > 0.0)) return false;
+    const double inv = 1.0 / weight;
+    for (int k = 0; k < NVALUES; k++) out[k] = values[k] * inv;
+    return true;
+  }
+};
+
+}    // namespace SPHSoil
+
+#endif

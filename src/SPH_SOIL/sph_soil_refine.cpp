@@ -1,0 +1,108 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package for LAMMPS: command sph_soil/refine
+------------------------------------------------------------------------- */
+
+#include "sph_soil_refine.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "neighbor.h"
+#include "pair_sph_soil.h"
+#include "region.h"
+#include "sph_soil_compat.h"
+#include "sph_soil_splitter.h"
+#include "utils.h"
+
+#include <string>
+#include <vector>
+
+using namespace LAMMPS_NS;
+
+namespace {
+const char *const STYLE = "sph_soil/refine";
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHSoilRefine::command(int narg, char **arg)
+{
+  if (domain->box_exist == 0) error->all(FLERR, "sph_soil/refine command before simulation box is defined");
+  if (narg < 1) error->all(FLERR, "Illegal sph_soil/refine command: expected 'sph_soil/refine group-ID keyword value ...'");
+  if (!atom->style_match("sph/soil")) error->all(FLERR, "sph_soil/refine command requires atom_style sph/soil");
+  const int igroup = group->find(arg[0]);
+  if (igroup == -1) error->all(FLERR, "Could not find sph_soil/refine group ID {}", arg[0]);
+  const int groupbit = group->bitmask[igroup];
+
+  SPHSoilSplitter splitter(lmp, STYLE);
+  Region *region = nullptr;
+  for (int iarg = 1; iarg < narg; iarg += 2) {
+    const std::string keyword = arg[iarg];
+    if (iarg + 1 >= narg) error->all(FLERR, "Illegal sph_soil/refine command: keyword {} needs a value", keyword);
+    const char *value = arg[iarg + 1];
+    if (keyword == "separation") {
+      splitter.separation = utils::numeric(FLERR, value, false, lmp);
+      if (!(splitter.separation > 0.0 && splitter.separation < 1.0))
+        error->all(FLERR, "Illegal sph_soil/refine separation {}: must be in (0, 1)", splitter.separation);
+    } else if (keyword == "smoothing") {
+      splitter.smoothing_ratio = utils::numeric(FLERR, value, false, lmp);
+      if (!(splitter.smoothing_ratio > 0.0 && splitter.smoothing_ratio < 1.0))
+        error->all(FLERR, "Illegal sph_soil/refine smoothing {}: must be in (0, 1)", splitter.smoothing_ratio);
+    } else if (keyword == "dref") {
+      splitter.reference_spacing = utils::numeric(FLERR, value, false, lmp);
+      if (!(splitter.reference_spacing > 0.0))
+        error->all(FLERR, "Illegal sph_soil/refine dref {}: must be > 0", splitter.reference_spacing);
+    } else if (keyword == "region") {
+      region = SphSoilCompat::find_region(domain, value);
+      if (!region) error->all(FLERR, "sph_soil/refine region {} does not exist", value);
+    } else {
+      error->all(FLERR, "Illegal sph_soil/refine keyword {} (allowed: separation, smoothing, dref, region)", keyword);
+    }
+  }
+  if (force->pair == nullptr || !force->pair_match("sph/soil", 1))
+    error->all(FLERR, "sph_soil/refine command requires pair_style sph/soil");
+
+  if (comm->me == 0) utils::logmesg(lmp, "System init for sph_soil/refine ...\n");
+  const int handle = SphSoilCompat::request_command_full_list(neighbor, this, STYLE);
+  lmp->init();
+  splitter.init();
+
+  // wall particles carry the wall geometry; splitting them would break it
+  auto pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));
+  bigint walls = 0, all_walls = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && pair->is_wall_type(atom->type[i])) walls++;
+  MPI_Allreduce(&walls, &all_walls, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all_walls > 0)
+    error->all(FLERR, "sph_soil/refine: group {} contains {} wall particles; refine soil particles only",
+               arg[0], all_walls);
+
+  // ghosts and the neighbour list, the way delete_atoms overlap sets them up
+  if (domain->triclinic) domain->x2lamda(atom->nlocal);
+  domain->pbc();
+  domain->reset_box();
+  comm->setup();
+  if (neighbor->style) neighbor->setup_bins();
+  comm->exchange();
+  comm->borders();
+  if (domain->triclinic) domain->lamda2x(atom->nlocal + atom->nghost);
+  neighbor->build(1);
+  NeighList *list = SphSoilCompat::command_neighbor_list(neighbor, this, handle);
+  neighbor->build_one(list);
+
+  if (region) region->prematch();
+  std::vector<int> parents;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    if (region && !region->match(atom->x[i][0], atom->x[i][1], atom->x[i][2])) continue;
+    parents.push_back(i);
+  }
+  const bigint before = atom->natoms;
+  const bigint split = splitter.split(parents, list);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "sph_soil/refine: split {} particles into {}: {} -> {} atoms\n", split,
+                   split * (domain->dimension == 3 ? 8 : 4), before, atom->natoms);
+}

@@ -1,0 +1,224 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package for LAMMPS: particle splitting (see the header)
+------------------------------------------------------------------------- */
+
+#include "sph_soil_splitter.h"
+
+#include "atom.h"
+#include "atom_vec_sph_soil.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "neigh_list.h"
+#include "pair_sph_soil.h"
+#include "soil_constitutive.h"
+#include "soil_material.h"
+#include "soil_split.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace LAMMPS_NS;
+using namespace SPHSoil;
+
+namespace {
+// interpolated state: density, stress (6), total strain (6)
+constexpr int NSTATE = 13;
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+SPHSoilSplitter::SPHSoilSplitter(LAMMPS *lmp, const std::string &who_) :
+    Pointers(lmp), who(who_), avec(nullptr), pair(nullptr)
+{
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHSoilSplitter::init()
+{
+  avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  if (!avec) error->all(FLERR, "{} requires atom_style sph/soil", who);
+  pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));
+  if (!pair) error->all(FLERR, "{} requires pair_style sph/soil", who);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double SPHSoilSplitter::smoothing_length(int i) const
+{
+  return avec->smoothing_length[i];
+}
+
+double SPHSoilSplitter::spacing(int i) const
+{
+  if (reference_spacing > 0.0) return level_spacing(reference_spacing, avec->level[i]);
+  const double density = pair->material(atom->type[i]).density;
+  const double volume = atom->rmass[i] / density;
+  return domain->dimension == 3 ? std::cbrt(volume) : std::sqrt(volume);
+}
+
+/* ----------------------------------------------------------------------
+   CSPM average of the state at `position` over the parent's neighbours of its type
+------------------------------------------------------------------------- */
+
+void SPHSoilSplitter::interpolate(int parent, const double *position, NeighList *list,
+                                  double *state) const
+{
+  const int dimension = domain->dimension;
+  double **x = atom->x;
+  const double *rho = atom->rho, *rmass = atom->rmass, *h = avec->smoothing_length;
+  const int *type = atom->type;
+  const int itype = type[parent];
+
+  CspmSum<NSTATE> sum;
+  auto add = [&](int j) {
+    const double dx = position[0] - x[j][0], dy = position[1] - x[j][1],
+                 dz = position[2] - x[j][2];
+    double f[NSTATE];
+    f[0] = rho[j];
+    for (int k = 0; k < 6; k++) {
+      f[1 + k] = avec->stress[j][k];
+      f[7 + k] = avec->total_strain[j][k];
+    }
+    sum.add(dimension, rmass[j] / rho[j], std::sqrt(dx * dx + dy * dy + dz * dz), h[j], f);
+  };
+  add(parent);
+  const int *neighbours = list->firstneigh[parent];
+  const int count = list->numneigh[parent];
+  for (int jj = 0; jj < count; jj++) {
+    const int j = neighbours[jj] & NEIGHMASK;
+    if (type[j] == itype) add(j);
+  }
+  if (!sum.result(state)) {
+    // no neighbour reaches the daughter (separation far beyond the support): keep the parent's
+    state[0] = rho[parent];
+    for (int k = 0; k < 6; k++) {
+      state[1 + k] = avec->stress[parent][k];
+      state[7 + k] = avec->total_strain[parent][k];
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the first new tag of each parent's daughters: after the largest ID, in the order of the
+   parents' IDs, so that the result does not depend on how atoms are spread over ranks
+------------------------------------------------------------------------- */
+
+std::vector<tagint> SPHSoilSplitter::first_new_tags(const std::vector<int> &parents, bigint &total)
+{
+  const int nprocs = comm->nprocs;
+  const int mine = (int) parents.size();
+  std::vector<int> counts(nprocs), offsets(nprocs, 0);
+  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  total = 0;
+  for (int p = 0; p < nprocs; p++) {
+    offsets[p] = (int) total;
+    total += counts[p];
+  }
+  if (total > MAXSMALLINT) error->all(FLERR, "{}: too many particles split at once ({})", who, total);
+
+  std::vector<tagint> local_tags(mine), all_tags(total > 0 ? total : 1);
+  for (int n = 0; n < mine; n++) local_tags[n] = atom->tag[parents[n]];
+  MPI_Allgatherv(local_tags.data(), mine, MPI_LMP_TAGINT, all_tags.data(), counts.data(),
+                 offsets.data(), MPI_LMP_TAGINT, world);
+  all_tags.resize(total);
+  std::sort(all_tags.begin(), all_tags.end());
+
+  tagint maxtag = 0, maxtag_all = 0;
+  for (int i = 0; i < atom->nlocal; i++) maxtag = MAX(maxtag, atom->tag[i]);
+  MPI_Allreduce(&maxtag, &maxtag_all, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+
+  const int new_per_parent = daughter_count(domain->dimension) - 1;
+  if ((double) maxtag_all + (double) total * new_per_parent >= (double) MAXTAGINT)
+    error->all(FLERR, "{}: new atom IDs would exceed the largest allowed ID", who);
+
+  std::vector<tagint> first(mine);
+  for (int n = 0; n < mine; n++) {
+    const auto rank = std::lower_bound(all_tags.begin(), all_tags.end(), local_tags[n]) - all_tags.begin();
+    first[n] = maxtag_all + (tagint) rank * new_per_parent + 1;
+  }
+  return first;
+}
+
+/* ---------------------------------------------------------------------- */
+
+bigint SPHSoilSplitter::split(const std::vector<int> &parents, NeighList *list)
+{
+  if (!atom->tag_enable) error->all(FLERR, "{} requires atom IDs", who);
+  bigint total = 0;
+  const std::vector<tagint> first_tag = first_new_tags(parents, total);
+  if (total == 0) return 0;
+
+  // the ghosts' state as of now (the strain does not travel every step)
+  comm->forward_comm();
+  comm->forward_comm_array(AtomVecSPHSoil::NVOIGT, avec->total_strain);
+
+  const int dimension = domain->dimension;
+  const int count = daughter_count(dimension);
+  const int nparents = (int) parents.size();
+
+  // 1. every daughter's position and interpolated state, before anything changes
+  std::vector<double> position((size_t) nparents * count * 3), state((size_t) nparents * count * NSTATE);
+  for (int n = 0; n < nparents; n++) {
+    const int i = parents[n];
+    double offsets[MAX_DAUGHTERS][3];
+    daughter_offsets(dimension, separation, spacing(i), offsets);
+    for (int k = 0; k < count; k++) {
+      double *xd = &position[((size_t) n * count + k) * 3];
+      for (int a = 0; a < 3; a++) xd[a] = atom->x[i][a] + offsets[k][a];
+      interpolate(i, xd, list, &state[((size_t) n * count + k) * NSTATE]);
+    }
+  }
+
+  // 2. the daughters: the parent's slot becomes daughter 0, the others are copies of the
+  //    parent appended to the owned atoms (overwriting the ghosts, which are rebuilt later)
+  atom->nghost = 0;
+  auto set_daughter = [&](int j, int n, int k, int parent_level, double parent_mass,
+                          double parent_h, const double *parent_force) {
+    const double *xd = &position[((size_t) n * count + k) * 3];
+    const double *sd = &state[((size_t) n * count + k) * NSTATE];
+    for (int a = 0; a < 3; a++) {
+      atom->x[j][a] = xd[a];
+      atom->f[j][a] = parent_force[a] / count;    // the parent's acceleration
+    }
+    atom->rmass[j] = parent_mass / count;
+    avec->smoothing_length[j] = smoothing_ratio * parent_h;
+    avec->level[j] = parent_level + 1;
+    atom->rho[j] = sd[0];
+    for (int c = 0; c < 6; c++) {
+      avec->stress[j][c] = sd[1 + c];
+      avec->total_strain[j][c] = sd[7 + c];
+    }
+    // a CSPM average of admissible stresses is admissible for one convex yield surface;
+    // the return guards against round-off
+    const auto model = pair->model(atom->type[j]);
+    if (model) model->return_to_admissible(avec->stress[j]);
+  };
+
+  for (int n = 0; n < nparents; n++) {
+    const int i = parents[n];
+    const int parent_level = avec->level[i];
+    const double parent_mass = atom->rmass[i], parent_h = avec->smoothing_length[i];
+    const double parent_force[3] = {atom->f[i][0], atom->f[i][1], atom->f[i][2]};
+    for (int k = 1; k < count; k++) {
+      const int j = atom->nlocal;
+      if (j == atom->nmax) avec->grow(0);    // moves every per-atom array
+      avec->copy(i, j, 0);
+      atom->tag[j] = first_tag[n] + k - 1;
+      atom->nlocal++;
+      set_daughter(j, n, k, parent_level, parent_mass, parent_h, parent_force);
+    }
+    set_daughter(i, n, 0, parent_level, parent_mass, parent_h, parent_force);
+  }
+
+  // 3. global bookkeeping
+  bigint nlocal = atom->nlocal;
+  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->map_init();
+    atom->map_set();
+  }
+  return total;
+}

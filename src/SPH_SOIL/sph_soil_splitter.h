@@ -1,0 +1,60 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package for LAMMPS: particle splitting shared by
+   fix sph/soil/refine (dynamic) and the sph_soil/refine command (static).
+
+   Replaces owned particles by their daughters (soil_split.h): mass, h,
+   level and position as specified, velocity copied, density, stress and
+   total strain interpolated by CSPM over the parent's neighbours of the
+   same type, every other per-atom value (including other fixes' per-atom
+   arrays, via AtomVec::copy) inherited from the parent.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_SOIL_SPLITTER_H
+#define LMP_SPH_SOIL_SPLITTER_H
+
+#include "pointers.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class SPHSoilSplitter : protected Pointers {
+ public:
+  // `who` names the command or fix in error messages
+  SPHSoilSplitter(class LAMMPS *, const std::string &who);
+
+  double separation = 0.5;         // eps_r: side of the daughters' square / d_p
+  double smoothing_ratio = 0.5;    // alpha_r: h_d / h_p
+  // d_ref, the spacing of level-0 particles; 0: from each particle's mass and its material's
+  // reference density, d_p = (m_p / rho_0)^(1/D) (which halves with each split)
+  double reference_spacing = 0.0;
+
+  // the pair style and atom style this run uses (call at init)
+  void init();
+  // spacing d_p of owned particle i
+  double spacing(int i) const;
+  // ratio h / d of owned particle i, the r_a of the refinement analysis
+  double smoothing_over_spacing(int i) const { return smoothing_length(i) / spacing(i); }
+
+  // Split the owned particles `parents`. `list` is a full neighbour list of the owned atoms,
+  // current with the ghosts. Refreshes the ghosts' state first (forward communication).
+  // Daughters get new atom IDs after the largest existing one, ordered by the parents' IDs
+  // and the daughter index, so they do not depend on the number of ranks. Afterwards the
+  // ghost atoms are gone (nghost = 0): the caller must reneighbour before the next force
+  // evaluation (fixes: next_reneighbor; commands: the next run's setup does it).
+  // Returns the number of parents split on all ranks.
+  bigint split(const std::vector<int> &parents, class NeighList *list);
+
+ private:
+  std::string who;
+  class AtomVecSPHSoil *avec;
+  class PairSPHSoil *pair;
+  double smoothing_length(int i) const;
+  void interpolate(int parent, const double *position, class NeighList *list, double *state) const;
+  std::vector<tagint> first_new_tags(const std::vector<int> &parents, bigint &total);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

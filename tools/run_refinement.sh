@@ -1,0 +1,34 @@
+#!/bin/bash
+# The refinement comparison (issue 4, the paper's Section IV): coarse, fine and four dynamic
+# runs of each problem, then the table and pictures (tools/compare_refinement.py).
+#   tools/run_refinement.sh [bars|collapse ...]     (default: both)
+# Runs in examples/refinement/ on all cores; skips a run whose final dump is newer than the
+# input and the binary (delete dump.*.final to force it).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${BUILD_DIR:-$root/build}
+[ -x "$build/lmp" ] || bash "$root/tools/build.sh"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export LAMMPS_POTENTIALS=$root/potentials
+np=${NP:-$(nproc)}
+problems=("$@")
+[ ${#problems[@]} -gt 0 ] || problems=(bars collapse)
+cd "$root/examples/refinement"
+for problem in "${problems[@]}"; do
+  runs=("coarse" "fine" "dynamic 0.5 0.5" "dynamic 0.55 0.5" "dynamic 0.55 0.6" "dynamic 0.55 0.7")
+  for run in "${runs[@]}"; do
+    set -- $run
+    mode=$1 eps=${2:-0.5} alpha=${3:-0.5}
+    name=${problem}_${mode}
+    [ "$mode" = dynamic ] && name=${problem}_dynamic_${eps}_${alpha}
+    if [ -f "dump.$name.final" ] && [ "dump.$name.final" -nt in.refinement ] && [ "dump.$name.final" -nt "$build/lmp" ]; then
+      echo "== $name: up to date"; continue
+    fi
+    echo "== $name"
+    rm -f frame_${name}_*.png
+    mpirun -np "$np" "$build/lmp" -in in.refinement -var problem "$problem" -var mode "$mode" \
+      -var eps "$eps" -var alpha "$alpha" -log "log.$name" -screen none \
+      || echo "== $name stopped with an error (see log.$name)"
+  done
+done
+/usr/bin/python3 "$root/tools/compare_refinement.py" --dir "$root/examples/refinement" "${problems[@]}"

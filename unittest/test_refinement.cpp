@@ -1,0 +1,372 @@
+// Particle refinement in LAMMPS: the sph_soil/refine command and fix sph/soil/refine.
+// Conservation of one split, the half lattice of a static refinement, CSPM of a constant
+// state, criterion / maxlevel / region, rank independence, restart, bad input.
+#include "sph_soil_testing.h"
+
+#include "domain.h"
+#include "fix.h"
+#include "modify.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+using namespace LAMMPS_NS;
+using namespace SphSoilTesting;
+
+namespace {
+
+const char *const SOIL = "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0";
+
+class Refinement : public LAMMPSTest {
+ protected:
+  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
+
+  // A periodic lattice of spacing 1 cm with mass rho0 d^D (so the derived d_p is 1 cm),
+  // optionally disordered, with velocities and stresses that vary in space.
+  void patch(int dimension, int n, bool disorder)
+  {
+    HIDE_OUTPUT([&] {
+      command(fmt::format("dimension {}", dimension));
+      command("boundary p p p");
+      command("atom_style sph/soil");
+      command("atom_modify map array");
+      if (dimension == 2) {
+        command("lattice sq 0.01 origin 0.5 0.5 0.0");
+        command(fmt::format("region box block 0 {} 0 {} -0.5 0.5", n, n));
+      } else {
+        command("lattice sc 0.01 origin 0.5 0.5 0.5");
+        command(fmt::format("region box block 0 {} 0 {} 0 {}", n, n, n));
+      }
+      command("create_box 1 box");
+      command("create_atoms 1 box");
+      if (disorder) {
+        command("variable xnew atom x+0.001*sin(1299*x+7823*y)");
+        command("variable ynew atom y+0.001*sin(3711*x-4557*y)");
+        command("set group all x v_xnew y v_ynew");
+      }
+      command("variable vx atom 0.02*sin(2*PI*y/0.1)+0.01*cos(2*PI*x/0.1)");
+      command("variable vy atom 0.015*sin(2*PI*x/0.1)");
+      command("variable sxx atom -2000.0-300.0*sin(300*x)");
+      command("variable syy atom -1500.0+200.0*cos(250*y)");
+      command("variable sxy atom 100.0*sin(200*(x+y))");
+      command(fmt::format("sph_soil/set all mass {} h 0.012 density 2650 stress v_sxx v_syy v_sxx v_sxy 0 0",
+                          dimension == 2 ? 2650 * 1e-4 : 2650 * 1e-6));
+      command("velocity all set v_vx v_vy NULL units box");
+      command("pair_style sph/soil");
+      command(SOIL);
+      command("neighbor 0.003 bin");
+      command("thermo 0");
+    });
+  }
+
+  // mass, momentum (3), kinetic energy, angular momentum about the origin (3)
+  std::vector<double> totals()
+  {
+    std::vector<double> local(8, 0.0), global(8, 0.0);
+    auto atom = lmp->atom;
+    for (int i = 0; i < atom->nlocal; i++) {
+      const double m = atom->rmass[i], *x = atom->x[i], *v = atom->v[i];
+      local[0] += m;
+      for (int k = 0; k < 3; k++) local[1 + k] += m * v[k];
+      local[4] += 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      local[5] += m * (x[1] * v[2] - x[2] * v[1]);
+      local[6] += m * (x[2] * v[0] - x[0] * v[2]);
+      local[7] += m * (x[0] * v[1] - x[1] * v[0]);
+    }
+    MPI_Allreduce(local.data(), global.data(), 8, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return global;
+  }
+
+  double fix_vector(const char *id, int n)
+  {
+    return lmp->modify->fix[lmp->modify->find_fix(id)]->compute_vector(n);
+  }
+};
+
+}    // namespace
+
+TEST_F(Refinement, StaticRefinementOfASquareLatticeGivesTheHalfLattice)
+{
+  for (int dimension : {2, 3}) {
+    HIDE_OUTPUT([&] { command("clear"); command("units si"); });
+    const int n = dimension == 2 ? 10 : 4;
+    patch(dimension, n, false);
+    HIDE_OUTPUT([&] { command("sph_soil/refine all separation 0.5 smoothing 0.5"); });
+    const int count = dimension == 2 ? 4 : 8;
+    const bigint expected = count * (bigint) std::pow(n, dimension);
+    ASSERT_EQ(lmp->atom->natoms, expected);
+    auto state = gather_state(lmp);
+    ASSERT_EQ((bigint) state.size(), expected);    // IDs unique
+    EXPECT_EQ(state.rbegin()->first, expected);     // and consecutive
+    std::set<std::vector<long>> sites;
+    const double half = 0.005, mass = (dimension == 2 ? 2650e-4 : 2650e-6) / count;
+    for (const auto &entry : state) {
+      const auto &s = entry.second;
+      std::vector<long> site;
+      for (int a = 0; a < dimension; a++) {
+        // the half lattice: x = (k + 1/2) d/2
+        const double k = s[1 + a] / half - 0.5;
+        EXPECT_NEAR(k, std::round(k), 1e-9) << "atom " << entry.first << " axis " << a;
+        site.push_back(std::lround(k));
+      }
+      sites.insert(site);
+      EXPECT_NEAR(s[8], 0.006, 1e-15) << "h = 0.6 d_ref";
+      EXPECT_NEAR(s[7], mass, 1e-15 * mass);
+      EXPECT_EQ(s[10], 1.0) << "level";
+    }
+    EXPECT_EQ((bigint) sites.size(), expected) << "every site of the half lattice once";
+  }
+}
+
+TEST_F(Refinement, SplitsConserveMassMomentumEnergyAndAngularMomentum)
+{
+  for (int dimension : {2, 3}) {
+    HIDE_OUTPUT([&] { command("clear"); command("units si"); });
+    patch(dimension, dimension == 2 ? 10 : 4, true);
+    if (dimension == 3) HIDE_OUTPUT([&] { command("velocity all set NULL NULL 0.01 units box"); });
+    auto before = totals();
+    HIDE_OUTPUT([&] { command("sph_soil/refine all separation 0.55 smoothing 0.6"); });
+    auto once = totals();
+    // a second level: two splits in a row
+    HIDE_OUTPUT([&] { command("sph_soil/refine all"); });
+    auto twice = totals();
+    const double scale[8] = {before[0], before[0] * 0.02, before[0] * 0.02, before[0] * 0.02,
+                             before[4], before[0] * 0.002, before[0] * 0.002, before[0] * 0.002};
+    for (int k = 0; k < 8; k++) {
+      EXPECT_NEAR(once[k], before[k], 1e-13 * scale[k]) << "dimension " << dimension << " total " << k;
+      EXPECT_NEAR(twice[k], before[k], 1e-13 * scale[k]) << "dimension " << dimension << " total " << k;
+    }
+    EXPECT_EQ(lmp->atom->natoms, (dimension == 2 ? 100 * 16 : 64 * 64));
+  }
+}
+
+TEST_F(Refinement, CspmKeepsAConstantStateExactly)
+{
+  patch(2, 10, true);
+  HIDE_OUTPUT([&] {
+    command("sph_soil/set all stress -3000 -2000 -2500 400 0 0 strain 0.01 -0.02 0 0.005 0 0 density 2700");
+    command("sph_soil/refine all separation 0.55 smoothing 0.5");
+  });
+  const double stress[6] = {-3000, -2000, -2500, 400, 0, 0}, strain[6] = {0.01, -0.02, 0, 0.005, 0, 0};
+  for (const auto &entry : gather_state(lmp)) {
+    const auto &s = entry.second;
+    EXPECT_NEAR(s[9], 2700.0, 1e-12 * 2700.0);
+    for (int k = 0; k < 6; k++) {
+      EXPECT_NEAR(s[11 + k], stress[k], 1e-12 * 3000.0) << "stress " << k;
+      EXPECT_NEAR(s[17 + k], strain[k], 1e-15) << "strain " << k;
+    }
+  }
+}
+
+TEST_F(Refinement, FixSplitsStrainedParticlesInItsRegionUpToMaxlevel)
+{
+  patch(2, 10, false);
+  HIDE_OUTPUT([&] {
+    command("velocity all set 0 0 0 units box");
+    command("sph_soil/set all stress 0 0 0 0 0 0");
+    // strained (measure 0.09 > 0.05) in the left half only
+    command("region left block 0 5 INF INF INF INF");
+    command("group left region left");
+    command("sph_soil/set left strain 0.3 0 0 0 0 0");
+    command("region low block INF INF 0 5 INF INF");
+    command("fix integrate all sph/soil cfl 0.1");
+    command("fix refine all sph/soil/refine 1 maxlevel 2 region low");
+    command("run 3 post no");
+  });
+  auto avec = soil_avec(lmp);
+  int local_bad = 0, local_level2 = 0;
+  for (int i = 0; i < lmp->atom->nlocal; i++) {
+    const double x = lmp->atom->x[i][0], y = lmp->atom->x[i][1];
+    const int level = avec->level[i];
+    if (level > 2) local_bad++;
+    // far from both region borders: split twice inside, never outside
+    if (x > 0.012 && x < 0.038 && y > 0.012 && y < 0.038 && level != 2) local_bad++;
+    if ((x > 0.062 && x < 0.098) || y > 0.062) {
+      if (level != 0) local_bad++;
+    }
+    if (level == 2) local_level2++;
+  }
+  int bad = 0, level2 = 0;
+  MPI_Allreduce(&local_bad, &bad, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(&local_level2, &level2, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(bad, 0);
+  EXPECT_GT(level2, 0);
+  // the thermo output: per-level counts add up to all atoms, the total split matches
+  const double n0 = fix_vector("refine", 2), n1 = fix_vector("refine", 3), n2 = fix_vector("refine", 4);
+  EXPECT_EQ(n0 + n1 + n2, (double) lmp->atom->natoms);
+  EXPECT_EQ((double) lmp->atom->natoms, 100 + 3 * fix_vector("refine", 1));
+  EXPECT_EQ(n2, level2);
+}
+
+TEST_F(Refinement, SameSplitsOnOneAndTwoRanks)
+{
+  patch(2, 12, true);
+  const std::vector<std::string> read = {"units si", "dimension 2", "atom_style sph/soil",
+                                         "atom_modify map array", "read_data refine.data",
+                                         "pair_style sph/soil", SOIL, "neighbor 0.003 bin",
+                                         "thermo 0", "fix integrate all sph/soil cfl 0.1",
+                                         "fix refine all sph/soil/refine 5 threshold 1e-8",
+                                         "run 60 post no"};
+  HIDE_OUTPUT([&] {
+    command("write_data refine.data");
+    command("clear");
+    for (const auto &line : read) command(line);
+  });
+  auto parallel = gather_state(lmp);
+  EXPECT_EQ((bigint) parallel.size(), lmp->atom->natoms);    // IDs unique
+  EXPECT_GT(lmp->atom->natoms, 144);                          // something was split
+
+  std::map<tagint, std::vector<double>> serial;
+  if (rank() == 0) {
+    const char *argv[] = {"serial", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
+    auto single = new LAMMPS(8, (char **) argv, MPI_COMM_SELF);
+    for (const auto &line : read) single->input->one(line);
+    for (int i = 0; i < single->atom->nlocal; i++) serial[single->atom->tag[i]] = atom_state(single, i);
+    delete single;
+  }
+  if (rank() != 0) return;
+  ASSERT_EQ(serial.size(), parallel.size());
+  for (const auto &entry : serial) {
+    const auto &p = parallel.at(entry.first);
+    for (int k : {1, 2, 7, 8, 10})
+      EXPECT_NEAR(p[k], entry.second[k], 1e-10 * std::fabs(entry.second[k]) + 1e-15)
+          << "atom " << entry.first << " " << state_names()[k];
+  }
+}
+
+TEST_F(Refinement, RestartAfterSplitsContinuesIdentically)
+{
+  patch(2, 12, true);
+  const std::vector<std::string> fixes = {"fix integrate all sph/soil cfl 0.1",
+                                          "fix refine all sph/soil/refine 5 threshold 1e-8"};
+  HIDE_OUTPUT([&] {
+    for (const auto &line : fixes) command(line);
+    command("run 40 post no");
+    command("write_restart refine.restart");
+    command("run 40 post no");
+  });
+  auto uninterrupted = gather_state(lmp);
+  const double total_split = fix_vector("refine", 1);
+  HIDE_OUTPUT([&] {
+    command("clear");
+    command("read_restart refine.restart");
+    command("pair_style sph/soil");
+    command(SOIL);
+    command("neighbor 0.003 bin");
+    for (const auto &line : fixes) command(line);
+    command("run 40 post no");
+  });
+  EXPECT_EQ(fix_vector("refine", 1), total_split);
+  auto restarted = gather_state(lmp);
+  ASSERT_EQ(restarted.size(), uninterrupted.size());
+  for (const auto &entry : uninterrupted) {
+    const auto &r = restarted.at(entry.first);
+    for (size_t k = 1; k < 23; k++)
+      EXPECT_NEAR(r[k], entry.second[k], 1e-12 * std::fabs(entry.second[k]) + 1e-18)
+          << "atom " << entry.first << " " << state_names()[k];
+  }
+}
+
+TEST_F(Refinement, FixedTimestepTooLargeAfterSplitIsAnError)
+{
+  patch(2, 10, false);
+  HIDE_OUTPUT([&] {
+    command("sph_soil/set all strain 0.3 0 0 0 0 0");
+    command("fix integrate all sph/soil");
+    command("fix refine all sph/soil/refine 1");
+    command("timestep 1.0e-4");    // stable limit before the split: 0.2 * 0.012 / 20.7 = 1.16e-4
+  });
+  EXPECT_LAMMPS_ERROR(".*Fix sph/soil/refine: after splitting at step 1 the timestep 0.0001 exceeds "
+                      "the stability limit.*use 'cfl 0.1' in fix sph/soil.*",
+                      command("run 2 post no"));
+}
+
+TEST_F(Refinement, UnstableParametersAreReported)
+{
+  patch(2, 6, false);
+  HIDE_OUTPUT([&] {
+    command("fix integrate all sph/soil cfl 0.1");
+    command("fix refine all sph/soil/refine 10 separation 0.55 smoothing 0.7");
+  });
+  auto output = CAPTURE_OUTPUT([&] { command("run 0 post no"); });
+  if (rank() != 0) return;
+  EXPECT_THAT(output, testing::HasSubstr("E_a = 0.01137, E_b = 0.0139"));
+  EXPECT_THAT(output, testing::HasSubstr("WARNING: Fix sph/soil/refine: separation 0.55 and smoothing "
+                                         "0.7 (h/d = 1.2) are in the unstable region for d_ij/d_ref "
+                                         "= 1.0 (unstable (Cond. 1 2))"));
+}
+
+TEST_F(Refinement, BadInput)
+{
+  patch(2, 6, false);
+  HIDE_OUTPUT([&] {
+    command("fix integrate all sph/soil");
+    command("region inner block 1 3 1 3 INF INF");
+  });
+  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine separation 0: must be in \\(0, 1\\).*",
+                      command("fix r all sph/soil/refine 10 separation 0"));
+  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine separation 1: must be in \\(0, 1\\).*",
+                      command("fix r all sph/soil/refine 10 separation 1"));
+  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine smoothing 1.5: must be in \\(0, 1\\).*",
+                      command("fix r all sph/soil/refine 10 smoothing 1.5"));
+  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine N 0: must be >= 1.*",
+                      command("fix r all sph/soil/refine 0"));
+  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine maxlevel 0: must be in 1 to 30.*",
+                      command("fix r all sph/soil/refine 10 maxlevel 0"));
+  EXPECT_LAMMPS_ERROR(".*Fix sph/soil/refine region nowhere does not exist.*",
+                      command("fix r all sph/soil/refine 10 region nowhere"));
+  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine keyword ratio \\(allowed: threshold, separation, "
+                      "smoothing, dref, maxlevel, region\\).*",
+                      command("fix r all sph/soil/refine 10 ratio 2"));
+  EXPECT_LAMMPS_ERROR(".*Illegal sph_soil/refine separation 1.2: must be in \\(0, 1\\).*",
+                      command("sph_soil/refine all separation 1.2"));
+  EXPECT_LAMMPS_ERROR(".*Illegal sph_soil/refine smoothing -0.5: must be in \\(0, 1\\).*",
+                      command("sph_soil/refine all smoothing -0.5"));
+  EXPECT_LAMMPS_ERROR(".*sph_soil/refine region nowhere does not exist.*",
+                      command("sph_soil/refine all region nowhere"));
+  EXPECT_LAMMPS_ERROR(".*Could not find sph_soil/refine group ID nogroup.*",
+                      command("sph_soil/refine nogroup"));
+}
+
+TEST_F(Refinement, WallParticlesCannotBeRefined)
+{
+  HIDE_OUTPUT([&] {
+    command("dimension 2");
+    command("boundary p p p");
+    command("atom_style sph/soil");
+    command("lattice sq 0.01 origin 0.5 0.5 0.0");
+    command("region box block 0 6 0 6 -0.5 0.5");
+    command("create_box 2 box");
+    command("region bottom block INF INF 0 2 INF INF");
+    command("create_atoms 1 box");
+    command("set region bottom type 2");
+    command("sph_soil/set all mass 0.265 h 0.012 density 2650");
+    command("pair_style sph/soil");
+    command(SOIL);
+    command("pair_coeff 2 2 wall");
+    command("group soil type 1");
+    command("fix integrate soil sph/soil");
+    command("timestep 1e-5");
+    command("fix refine all sph/soil/refine 10");
+  });
+  EXPECT_LAMMPS_ERROR(".*Fix sph/soil/refine: group all contains 12 wall particles \\(e.g. type 2\\); "
+                      "refine soil particles only.*",
+                      command("run 0 post no"));
+  HIDE_OUTPUT([&] { command("unfix refine"); });
+  EXPECT_LAMMPS_ERROR(".*sph_soil/refine: group all contains 12 wall particles; refine soil particles only.*",
+                      command("sph_soil/refine all"));
+}
+
+TEST_F(Refinement, RequiresTheSoilAtomStyle)
+{
+  HIDE_OUTPUT([&] {
+    command("atom_style atomic");
+    command("region box block 0 1 0 1 0 1");
+    command("create_box 1 box");
+  });
+  EXPECT_LAMMPS_ERROR(".*Fix sph/soil/refine requires atom_style sph/soil.*",
+                      command("fix r all sph/soil/refine 10"));
+  EXPECT_LAMMPS_ERROR(".*sph_soil/refine command requires atom_style sph/soil.*",
+                      command("sph_soil/refine all"));
+}
