@@ -89,20 +89,24 @@ def main():
     p.add_argument('--mpirun', default='mpirun')
     p.add_argument('--workdir', default=None)
     p.add_argument('--var', action='append', default=[], help='extra NAME=VALUE input variables')
+    p.add_argument('--input', default=None, help='input file in the example directory (default: in.<example>)')
+    p.add_argument('--name', default=None, help='name of the reference logs (default: the example), '
+                   'for several variants of one example')
     p.add_argument('--update', action='store_true', help='write the reference log instead of comparing')
     a = p.parse_args()
 
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     exdir = os.path.join(root, 'examples', a.example)
-    infile = os.path.join(exdir, f'in.{a.example}')
-    work = a.workdir or os.path.join(os.getcwd(), f'regression_{a.example}_np{a.np}')
+    infile = os.path.join(exdir, a.input or f'in.{a.example}')
+    name = a.name or a.example
+    work = a.workdir or os.path.join(os.getcwd(), f'regression_{name}_np{a.np}')
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     cmd = [a.mpirun, '-np', str(a.np), os.path.abspath(a.lmp), '-in', infile, '-var', 'short', '1',
            '-log', 'log.short', '-screen', 'none']
     for v in a.var:
-        name, value = v.split('=', 1)
-        cmd += ['-var', name, value]
+        var_name, value = v.split("=", 1)
+        cmd += ["-var", var_name, value]
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
     start = time.time()
     run = subprocess.run(cmd, cwd=work, env=env)
@@ -116,22 +120,22 @@ def main():
 
     if a.update:
         stamp = time.strftime('%d%b%y')
-        for old in glob.glob(os.path.join(exdir, f'log.*.{a.example}.short.{a.np}')):
+        for old in glob.glob(os.path.join(exdir, f'log.*.{name}.short.{a.np}')):
             os.remove(old)
-        target = os.path.join(exdir, f'log.{stamp}.{a.example}.short.{a.np}')
+        target = os.path.join(exdir, f'log.{stamp}.{name}.short.{a.np}')
         shutil.copy(os.path.join(work, 'log.short'), target)
         print(f'regression: reference written to {target}')
         return
-    refs = sorted(glob.glob(os.path.join(exdir, f'log.*.{a.example}.short.{a.np}')), key=os.path.getmtime)
+    refs = sorted(glob.glob(os.path.join(exdir, f'log.*.{name}.short.{a.np}')), key=os.path.getmtime)
     if not refs:
-        raise SystemExit(f'regression: no reference log examples/{a.example}/log.*.{a.example}.short.{a.np}')
+        raise SystemExit(f'regression: no reference log examples/{a.example}/log.*.{name}.short.{a.np}')
     problems = compare(thermo_table(refs[-1]), new)
     if problems:
-        print(f'regression: {a.example} np {a.np} differs from {os.path.basename(refs[-1])}:')
+        print(f'regression: {name} np {a.np} differs from {os.path.basename(refs[-1])}:')
         for line in problems[:20]:
             print('  ' + line)
         raise SystemExit(1)
-    print(f'regression: {a.example} np {a.np} matches {os.path.basename(refs[-1])} '
+    print(f'regression: {name} np {a.np} matches {os.path.basename(refs[-1])} '
           f'({len(new[1])} rows x {len(new[0])} columns, rtol {RTOL})')
 
 

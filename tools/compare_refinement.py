@@ -1,0 +1,299 @@
+#!/usr/bin/python3
+"""The refinement paper's Section IV comparison: coarse, fine and dynamic runs.
+
+Reads examples/refinement/{log,dump}.<problem>_<run>.* written by tools/run_refinement.sh and,
+for each run, reports
+  - wall_seconds: the sum of the run segments' loop times (LAMMPS "Loop time of ...");
+  - peak_particles, final_particles: from the thermo output (walls included, same in every run);
+  - surface_rms_vs_fine_m: RMS difference of the final free surface from the fine run's, over
+    x in [0, the fine run's runout], the surface being the top edge (centre + half the particle's
+    own spacing) of the particles within one coarse spacing of each x;
+  - surface_rms_vs_experiment_m (aluminium bars only): the same against the measured surface;
+  - runout_m: the furthest x where the surface stands higher than one coarse spacing;
+  - failure_angle_deg: the angle of the boundary of the soil that moved less than 0.75 coarse
+    spacings (1.5 mm for the bars, as in tools/validate_aluminium_bars.py), by initial position;
+    daughters carry their parent's initial position (fix store/state is inherited);
+  - instability_index: the fraction of soil particles whose nearest neighbour is closer than a
+    third of their own spacing. In a lattice the nearest neighbour sits at one spacing, and
+    compression alone brings it to about 0.85; pairs at a third of it only form when particles
+    clump (the compressive instability that the paper reports as clumps and cracks).
+Writes doc/refinement_comparison.json, doc/refinement_comparison.rst (tables) and the pictures
+doc/img/refinement_<problem>_frames.png (one row per run) and _surface.png.
+
+  tools/compare_refinement.py --dir examples/refinement [bars] [collapse]
+"""
+import argparse
+import glob
+import json
+import math
+import os
+import re
+
+import numpy as np
+
+PROBLEMS = {
+    'bars': dict(d=0.002, height=0.1, times=(0.06, 0.11, 0.6), title='Aluminium bars (Bui et al. 2008)',
+                 experiment='examples/aluminium_bars/experiment/surface.csv'),
+    'collapse': dict(d=0.04, height=2.0, times=(0.25, 0.45, 1.8), title='Soil collapse (SPEC 6.2)',
+                     experiment=None),
+}
+RUNS = [('coarse', 'coarse'), ('fine', 'fine (static 0.5, 0.5)'),
+        ('dynamic_0.5_0.5', 'dynamic (0.5, 0.5)'), ('dynamic_0.55_0.5', 'dynamic (0.55, 0.5)'),
+        ('dynamic_0.55_0.6', 'dynamic (0.55, 0.6)'), ('dynamic_0.55_0.7', 'dynamic (0.55, 0.7)')]
+
+
+def read_dump(path):
+    with open(path) as f:
+        lines = f.read().splitlines()
+    start = max(i for i, l in enumerate(lines) if l.startswith('ITEM: ATOMS'))
+    names = lines[start].split()[2:]
+    rows = [l.split() for l in lines[start + 1:] if l.strip() and not l.startswith('ITEM')]
+    data = np.array(rows, dtype=float).reshape(-1, len(names))
+    return {n: data[:, k] for k, n in enumerate(names)}
+
+
+def read_log(path):
+    """Sum of loop times, the Atoms column of every thermo table, and whether it ended cleanly."""
+    text = open(path).read()
+    loop = sum(float(t) for t in re.findall(r'Loop time of ([0-9.eE+-]+) on', text))
+    atoms = []
+    header = None
+    for line in text.splitlines():
+        words = line.split()
+        if words[:1] == ['Step']:
+            header = words
+            continue
+        if header and len(words) == len(header):
+            try:
+                atoms.append(int(float(words[header.index('Atoms')])))
+            except ValueError:
+                header = None
+        else:
+            header = None
+    error = re.search(r'^ERROR.*$', text, re.M)
+    return loop, atoms, error.group(0) if error else None
+
+
+def surface(x, y, spacing, at, window):
+    """Top edge of the particles within `window` of each position (0 where there are none)."""
+    top = np.zeros(len(at))
+    for k, xa in enumerate(at):
+        near = np.abs(x - xa) <= window
+        if near.any():
+            top[k] = (y[near] + 0.5 * spacing[near]).max()
+    return top
+
+
+def failure_angle(x0, y0, moved, d, height):
+    xs, ys = [], []
+    for xc in np.arange(x0.min(), x0.max() + 0.5 * d, d):
+        col = np.abs(x0 - xc) < 0.5 * d
+        if not col.any():
+            continue
+        still = col & ~moved
+        xs.append(xc)
+        ys.append(y0[still].max() + 0.5 * d if still.any() else 0.0)
+    xs, ys = np.array(xs), np.array(ys)
+    fit = (ys > 0.05 * height) & (ys < 0.95 * height)
+    if fit.sum() < 2:
+        return float('nan')
+    return math.degrees(math.atan(-np.polyfit(xs[fit], ys[fit], 1)[0]))
+
+
+def instability_index(x, y, spacing, cell):
+    """Fraction of particles whose nearest neighbour is closer than a third of their spacing."""
+    keys = np.floor(np.stack([x / cell, y / cell], axis=1)).astype(np.int64)
+    cells = {}
+    for i, key in enumerate(map(tuple, keys)):
+        cells.setdefault(key, []).append(i)
+    close = np.zeros(len(x), dtype=bool)
+    for (cx, cy), members in cells.items():
+        members = np.array(members)
+        others = [cells.get((cx + a, cy + b), []) for a in (-1, 0, 1) for b in (-1, 0, 1)]
+        others = np.array([j for group in others for j in group])
+        dx = x[members][:, None] - x[others][None, :]
+        dy = y[members][:, None] - y[others][None, :]
+        r = np.sqrt(dx * dx + dy * dy)
+        r[members[:, None] == others[None, :]] = np.inf
+        close[members] = r.min(axis=1) < spacing[members] / 3.0
+    return float(close.mean())
+
+
+def analyse(directory, problem, root):
+    spec = PROBLEMS[problem]
+    d = spec['d']
+    results = {}
+    profiles = {}
+    for key, label in RUNS:
+        name = f'{problem}_{key}'
+        log = os.path.join(directory, f'log.{name}')
+        dump = os.path.join(directory, f'dump.{name}.final')
+        if not os.path.exists(log):
+            continue
+        loop, atoms, error = read_log(log)
+        entry = dict(run=label, wall_seconds=round(loop, 1), peak_particles=max(atoms) if atoms else None,
+                     final_particles=atoms[-1] if atoms else None, error=error)
+        if error or not os.path.exists(dump):
+            entry['completed'] = False
+            results[key] = entry
+            continue
+        entry['completed'] = True
+        s = read_dump(dump)
+        level = s['c_soil[2]']
+        spacing = d * 0.5 ** level
+        x, y = s['x'], s['y']
+        grid = np.arange(0.0, x.max() + d, 0.5 * d)
+        top = surface(x, y, spacing, grid, d)
+        high = grid[top > d]
+        entry['runout_m'] = float(high.max()) if len(high) else 0.0
+        moved = np.hypot(x - s['f_origin[1]'], y - s['f_origin[2]']) > 0.75 * d
+        entry['failure_angle_deg'] = round(failure_angle(s['f_origin[1]'], s['f_origin[2]'], moved, d,
+                                                         spec['height']), 2)
+        entry['instability_index'] = round(instability_index(x, y, spacing, d), 5)
+        entry['soil_particles'] = int(len(x))
+        profiles[key] = (grid, top, x, y, spacing)
+        if spec['experiment']:
+            exp = np.loadtxt(os.path.join(root, spec['experiment']), delimiter=',', skiprows=1)
+            sim = surface(x, y, spacing, exp[:, 0], d)
+            entry['surface_rms_vs_experiment_m'] = float(np.sqrt(np.mean((sim - exp[:, 1]) ** 2)))
+        results[key] = entry
+    if 'fine' in profiles:
+        grid_f, top_f, *_ = profiles['fine']
+        reach = results['fine']['runout_m']
+        at = grid_f[grid_f <= reach]
+        ref = top_f[grid_f <= reach]
+        for key, (grid, top, x, y, spacing) in profiles.items():
+            sim = surface(x, y, spacing, at, d)
+            results[key]['surface_rms_vs_fine_m'] = float(np.sqrt(np.mean((sim - ref) ** 2)))
+    return results, profiles
+
+
+def frames_figure(directory, problem, out):
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    import matplotlib.image as mpimg
+    rows = []
+    for key, label in RUNS:
+        files = []
+        for k in (1, 2, 3):
+            found = sorted(glob.glob(os.path.join(directory, f'frame_{problem}_{key}_{k}.*.png')),
+                           key=os.path.getmtime)
+            files.append(found[-1] if found else None)
+        if any(files):
+            rows.append((label, files))
+    if not rows:
+        return
+    fig, axes = plt.subplots(len(rows), 3, figsize=(15, 1.2 * len(rows) + 0.6), squeeze=False)
+    for r, (label, files) in enumerate(rows):
+        for c, path in enumerate(files):
+            ax = axes[r][c]
+            ax.axis('off')
+            if path:
+                ax.imshow(mpimg.imread(path))
+            if r == 0:
+                ax.set_title(f't = {PROBLEMS[problem]["times"][c]} s', fontsize=10)
+            if c == 0:
+                ax.text(-0.01, 0.5, label, transform=ax.transAxes, ha='right', va='center', fontsize=9)
+    fig.suptitle(PROBLEMS[problem]['title'] + ': strain measure (blue 0 to red >= 0.3)', fontsize=11)
+    fig.subplots_adjust(left=0.13, right=0.99, top=0.9, bottom=0.01, wspace=0.02, hspace=0.05)
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+
+
+def surface_figure(problem, profiles, root, out):
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(9, 3.4))
+    for key, label in RUNS:
+        if key in profiles:
+            grid, top, *_ = profiles[key]
+            ax.plot(grid, top, label=label, lw=1.2 if key.startswith('dynamic') else 2.0)
+    spec = PROBLEMS[problem]
+    if spec['experiment']:
+        exp = np.loadtxt(os.path.join(root, spec['experiment']), delimiter=',', skiprows=1)
+        ax.plot(exp[:, 0], exp[:, 1], 'ko', ms=3, label='experiment')
+    ax.set_xlabel('x (m)')
+    ax.set_ylabel('surface height (m)')
+    ax.set_title(spec['title'] + ': final free surface')
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+
+
+def table(problem, results):
+    cols = [('run', 'run', '{}'), ('wall_seconds', 'wall (s)', '{:.0f}'), ('peak_particles', 'peak N', '{}'),
+            ('final_particles', 'final N', '{}'), ('surface_rms_vs_fine_m', 'RMS vs fine (mm)', '{:.2f}'),
+            ('surface_rms_vs_experiment_m', 'RMS vs exp. (mm)', '{:.2f}'),
+            ('runout_m', 'runout (m)', '{:.3f}'), ('failure_angle_deg', 'failure angle', '{:.1f}'),
+            ('instability_index', 'instability', '{:.4f}')]
+    if not PROBLEMS[problem]['experiment']:
+        cols = [c for c in cols if c[0] != 'surface_rms_vs_experiment_m']
+    lines = []
+    rows = []
+    for key, _ in RUNS:
+        if key not in results:
+            continue
+        e = results[key]
+        row = []
+        for field, _, fmt in cols:
+            v = e.get(field)
+            if v is None or (isinstance(v, float) and math.isnan(v)):
+                row.append('stopped' if not e.get('completed') and field != 'run' else '-')
+            elif field.endswith('_m') and 'rms' in field:
+                row.append(fmt.format(1000 * v))
+            else:
+                row.append(fmt.format(v))
+        rows.append(row)
+    header = [c[1] for c in cols]
+    widths = [max(len(header[k]), *(len(r[k]) for r in rows)) for k in range(len(cols))]
+    sep = '  '.join('=' * w for w in widths)
+    lines.append(sep)
+    lines.append('  '.join(h.ljust(w) for h, w in zip(header, widths)))
+    lines.append(sep)
+    for r in rows:
+        lines.append('  '.join(v.ljust(w) for v, w in zip(r, widths)))
+    lines.append(sep)
+    return '\n'.join(lines)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument('--dir', default='examples/refinement')
+    p.add_argument('problems', nargs='*', default=['bars', 'collapse'])
+    a = p.parse_args()
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    jpath = os.path.join(root, 'doc', 'refinement_comparison.json')
+    summary = json.load(open(jpath)) if os.path.exists(jpath) else {}
+    os.makedirs(os.path.join(root, 'doc', 'img'), exist_ok=True)
+    for problem in a.problems:
+        results, profiles = analyse(a.dir, problem, root)
+        if not results:
+            print(f'compare_refinement: no runs of {problem} in {a.dir}')
+            continue
+        summary[problem] = results
+        frames_figure(a.dir, problem, os.path.join(root, 'doc', 'img', f'refinement_{problem}_frames.png'))
+        surface_figure(problem, profiles, root, os.path.join(root, 'doc', 'img', f'refinement_{problem}_surface.png'))
+    with open(jpath, 'w') as f:
+        json.dump(summary, f, indent=1)
+    print(json.dumps(summary, indent=1))
+
+    page = ['Refinement comparison (generated)', '=' * 33, '',
+            'Written by ``tools/compare_refinement.py`` from the runs of ``tools/run_refinement.sh``',
+            '(examples/refinement, 2 MPI ranks). Columns: see the script\'s docstring;',
+            'the discussion is in :doc:`fix sph/soil/refine <fix_sph_soil_refine>`.', '']
+    for problem in ('bars', 'collapse'):
+        if problem not in summary:
+            continue
+        title = PROBLEMS[problem]['title']
+        page += [title, '"' * len(title), '', table(problem, summary[problem]), '',
+                 f'.. image:: img/refinement_{problem}_frames.png', '   :width: 100%', '',
+                 f'.. image:: img/refinement_{problem}_surface.png', '   :width: 80%', '']
+    with open(os.path.join(root, 'doc', 'refinement_comparison.rst'), 'w') as f:
+        f.write('\n'.join(page))
+
+
+if __name__ == '__main__':
+    main()
