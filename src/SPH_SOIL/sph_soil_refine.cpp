@@ -91,7 +91,9 @@ void SPHSoilRefine::command(int narg, char **arg)
   if (domain->triclinic) domain->lamda2x(atom->nlocal + atom->nghost);
   neighbor->build(1);
   NeighList *list = SphSoilCompat::command_neighbor_list(neighbor, this, handle);
-  neighbor->build_one(list);
+  // preflag 1: rebuild even if an occasional list was built at this step before (a second
+  // sph_soil/refine at the same step would otherwise get the stale list of the first)
+  neighbor->build_one(list, 1);
 
   if (region) region->prematch();
   std::vector<int> parents;
