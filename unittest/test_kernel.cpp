@@ -114,9 +114,9 @@ TEST(CubicSpline, GradientFactorFromInverseAgrees)
   for (double h : {0.0012, 0.7, 3.0})
     for (double q = 0.01; q < 2.2; q += 0.037) {
       const double r = q * h;
-      EXPECT_NEAR(CubicSpline::gradient_factor_from_inverse<2>(r, 1.0 / h),
+      EXPECT_NEAR(CubicSpline::gradient_factor_from_inverse<2>(r, 1.0 / h, h / r),
                   CubicSpline::gradient_factor(2, r, h), 1e-13 * std::fabs(CubicSpline::gradient_factor(2, 0.0, h)));
-      EXPECT_NEAR(CubicSpline::gradient_factor_from_inverse<3>(r, 1.0 / h),
+      EXPECT_NEAR(CubicSpline::gradient_factor_from_inverse<3>(r, 1.0 / h, h / r),
                   CubicSpline::gradient_factor(3, r, h), 1e-13 * std::fabs(CubicSpline::gradient_factor(3, 0.0, h)));
     }
 }

@@ -341,8 +341,22 @@ template <int DIMENSION> void PairSPHSoil::eval()
   double **spin = avec->spin;
   double **wall_normal = avec->wall_normal;
   const double *wall_distance = avec->wall_distance;
+  // members as locals: the stores to f, drho and the rates (double *) could otherwise alias
+  // the double members, which the compiler would then reload for every pair
+  const double alpha = viscosity_alpha, beta_viscosity = viscosity_beta;
+  const bool freeslip = free_slip;
+  double *const *const c_type = sound_speed_ij;
+  const int *const is_wall = type_is_wall.data();
 
-  prepare_atom_factors();
+  // Monaghan's Pi_ij = (-alpha c mu + beta mu^2) / rhobar with mu = N / D, N = h_ij v_ij.x_ij,
+  // D = r^2 + 0.01 h_ij^2, written over one division: N (beta N - alpha c D) / (D^2 rhobar)
+  auto monaghan_viscosity = [alpha, beta_viscosity](double n, double d, double rhobar, double c) {
+    return n * (beta_viscosity * n - alpha * c * d) / (d * d * rhobar);
+  };
+
+  prepare_atom_factors();    // (re)allocates the per-atom factors: take their addresses after it
+  const double *const volumes = volume;
+  double *const *const stress_factor = stress_over_rho2;
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -371,12 +385,12 @@ template <int DIMENSION> void PairSPHSoil::eval()
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const int itype = type[i];
-    const bool wall_i = type_is_wall[itype];
+    const bool wall_i = is_wall[itype];
     const double *xi = x[i];
     const double hi = h[i];
     const double *vi = vest[i];
-    const double *si = stress_over_rho2[i];
-    const double mi = rmass[i], rhoi = rho[i], volume_i = volume[i];
+    const double *si = stress_factor[i];
+    const double mi = rmass[i], rhoi = rho[i], volume_i = volumes[i];
 
     // i's shares of soil-soil pairs, accumulated here and stored once after the j loop
     double drho_i = 0.0, force_i[3] = {0.0, 0.0, 0.0};
@@ -387,16 +401,22 @@ template <int DIMENSION> void PairSPHSoil::eval()
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const int jtype = type[j];
-      const bool wall_j = type_is_wall[jtype];
+      const bool wall_j = is_wall[jtype];
       if (wall_i && wall_j) continue;
       double dx[3] = {xi[0] - x[j][0], xi[1] - x[j][1], DIMENSION == 3 ? xi[2] - x[j][2] : 0.0};
       const double r2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
       const double hij = 0.5 * (hi + h[j]);
       if (r2 >= 4.0 * hij * hij) continue;
 
+      // the square root and the two divisions are independent of each other, so that the
+      // processor overlaps them; at r = 0 (coinciding particles) the gradient is 0 whatever
+      // the factor, and 1/r^2 = 0 keeps the factor finite
       const double r = sqrt(r2);
-      const double factor = CubicSpline::gradient_factor_from_inverse<DIMENSION>(r, 1.0 / hij);
-      const double c_ij = sound_speed_ij[itype][jtype];
+      const double inv_h = 1.0 / hij;
+      const double inv_r2 = r2 > 0.0 ? 1.0 / r2 : 0.0;
+      const double factor =
+          CubicSpline::gradient_factor_from_inverse<DIMENSION>(r, inv_h, hij * r * inv_r2);
+      const double c_ij = c_type[itype][jtype];
 
       if (!wall_i && !wall_j) {
         // soil-soil: grad = dW/dx_i, and dW/dx_j = -grad
@@ -415,11 +435,9 @@ template <int DIMENSION> void PairSPHSoil::eval()
 
         // Monaghan artificial viscosity, only for approaching pairs
         double viscosity = 0.0;
-        if (vdotx < 0.0) {
-          const double mu = hij * vdotx / (r2 + 0.01 * hij * hij);
-          viscosity = (-viscosity_alpha * c_ij * mu + viscosity_beta * mu * mu) / (0.5 * (rhoi + rho[j]));
-        }
-        const double *sj = stress_over_rho2[j];
+        if (vdotx < 0.0)
+          viscosity = monaghan_viscosity(hij * vdotx, r2 + 0.01 * hij * hij, 0.5 * (rhoi + rho[j]), c_ij);
+        const double *sj = stress_factor[j];
         const double mimj = mi * mj;
         double pair_force[3];
         if (DIMENSION == 2) {
@@ -444,7 +462,7 @@ template <int DIMENSION> void PairSPHSoil::eval()
 
         // g_i += V_j (v_j - v_i) x grad, and g_j += V_i (v_i - v_j) x (-grad): the same tensor
         double t[3][3];
-        const double volume_j = volume[j];
+        const double volume_j = volumes[j];
         for (int a = 0; a < DIMENSION; a++)
           for (int b = 0; b < DIMENSION; b++) {
             t[a][b] = -vij[a] * grad[b];
@@ -471,7 +489,7 @@ template <int DIMENSION> void PairSPHSoil::eval()
       const double beta = ds > 0.0 ? MIN(1.5, 1.0 + wall_distance[wall] / ds) : 1.5;
       const double *vs = vest[soil];
       double vsw[3];
-      if (free_slip) {
+      if (freeslip) {
         double vn = 0.0;
         for (int a = 0; a < DIMENSION; a++) vn += vs[a] * n[a];
         for (int a = 0; a < DIMENSION; a++) vsw[a] = beta * vn * n[a];
@@ -486,11 +504,8 @@ template <int DIMENSION> void PairSPHSoil::eval()
       const double mw = rmass[wall], rhos = rho[soil];
       drho[soil] += mw * vdotgrad;
       double viscosity = 0.0;
-      if (vdotx < 0.0) {
-        const double mu = hij * vdotx / (r2 + 0.01 * hij * hij);
-        viscosity = (-viscosity_alpha * c_ij * mu + viscosity_beta * mu * mu) / rhos;
-      }
-      const double *ss = stress_over_rho2[soil];
+      if (vdotx < 0.0) viscosity = monaghan_viscosity(hij * vdotx, r2 + 0.01 * hij * hij, rhos, c_ij);
+      const double *ss = stress_factor[soil];
       const double mswall = rmass[soil] * mw;
       for (int a = 0; a < DIMENSION; a++) {
         double sum = -viscosity * grad[a];

@@ -59,9 +59,11 @@ struct CubicSpline {
     return -c * 0.75 * t * t / q;
   }
 
-  // The same as gradient_factor(), from 1/h, with two divisions fewer: the form the pair
-  // loop uses (one 1/h per pair, no 1/q).
-  template <int DIMENSION> static inline double gradient_factor_from_inverse(double r, double inv_h)
+  // The same as gradient_factor(), in the form the pair loop uses: from 1/h and h/r, which it
+  // gets from a single division 1/(h r), so that no division is left here (divisions and the
+  // square root are what the pair loop waits for).
+  template <int DIMENSION>
+  static inline double gradient_factor_from_inverse(double r, double inv_h, double h_over_r)
   {
     constexpr double PI = 3.14159265358979323846;
     constexpr double C = DIMENSION == 3 ? 1.0 / PI : 10.0 / (7.0 * PI);
@@ -71,7 +73,7 @@ struct CubicSpline {
     const double c = DIMENSION == 3 ? C * inv_h2 * inv_h2 * inv_h : C * inv_h2 * inv_h2;
     if (q < 1.0) return c * (-3.0 + 2.25 * q);
     const double t = 2.0 - q;
-    return -c * 0.75 * t * t / q;
+    return -c * 0.75 * t * t * h_over_r;
   }
 
   // d2W/dr2, whose sign decides the tensile/compressive (Swegle) instability:
