@@ -6,10 +6,12 @@ for each run, reports
   - wall_seconds: the sum of the run segments' loop times (LAMMPS "Loop time of ...");
   - peak_particles, final_particles: from the thermo output (walls included, same in every run);
   - surface_rms_vs_fine_m: RMS difference of the final free surface from the fine run's, over
-    x in [0, the fine run's runout], the surface being the top edge (centre + half the particle's
-    own spacing) of the particles within one coarse spacing of each x;
+    x in [0, the fine run's runout], the surface being the 0.5 level of the SPH volume fraction
+    (tools/sph_surface.py: the surface of the continuum the particles stand for; a particle of
+    level l has the volume (d 2^-l)^2 and h = 1.2 d alpha_r^l);
   - surface_rms_vs_experiment_m (aluminium bars only): the same against the measured surface;
-  - runout_m: the furthest x where the surface stands higher than one coarse spacing;
+  - runout_m: the furthest x where that surface stands higher than one coarse spacing (2 mm for
+    the bars, as in tools/validate_aluminium_bars.py);
   - failure_angle_deg: the angle of the boundary of the soil that moved less than 0.75 coarse
     spacings (1.5 mm for the bars, as in tools/validate_aluminium_bars.py), by initial position;
     daughters carry their parent's initial position (fix store/state is inherited);
@@ -28,8 +30,12 @@ import json
 import math
 import os
 import re
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import sph_surface  # noqa: E402
 
 PROBLEMS = {
     'bars': dict(d=0.002, height=0.1, times=(0.06, 0.11, 0.6), title='Aluminium bars (Bui et al. 2008)',
@@ -74,14 +80,11 @@ def read_log(path):
     return loop, atoms, error.group(0) if error else None
 
 
-def surface(x, y, spacing, at, window):
-    """Top edge of the particles within `window` of each position (0 where there are none)."""
-    top = np.zeros(len(at))
-    for k, xa in enumerate(at):
-        near = np.abs(x - xa) <= window
-        if near.any():
-            top[k] = (y[near] + 0.5 * spacing[near]).max()
-    return top
+def smoothing_ratio(key):
+    """alpha_r of a run: the fine run splits with (0.5, 0.5), a dynamic one with its own."""
+    if key.startswith('dynamic_'):
+        return float(key.split('_')[2])
+    return 0.5
 
 
 def failure_angle(x0, y0, moved, d, height):
@@ -141,20 +144,18 @@ def analyse(directory, problem, root):
         s = read_dump(dump)
         level = s['c_soil[2]']
         spacing = d * 0.5 ** level
+        h = 1.2 * d * smoothing_ratio(key) ** level
         x, y = s['x'], s['y']
-        grid = np.arange(0.0, x.max() + d, 0.5 * d)
-        top = surface(x, y, spacing, grid, d)
-        high = grid[top > d]
-        entry['runout_m'] = float(high.max()) if len(high) else 0.0
+        entry['runout_m'], grid, top = sph_surface.runout(x, y, spacing ** 2, h, d, d)
         moved = np.hypot(x - s['f_origin[1]'], y - s['f_origin[2]']) > 0.75 * d
         entry['failure_angle_deg'] = round(failure_angle(s['f_origin[1]'], s['f_origin[2]'], moved, d,
                                                          spec['height']), 2)
         entry['instability_index'] = round(instability_index(x, y, spacing, d), 5)
         entry['soil_particles'] = int(len(x))
-        profiles[key] = (grid, top, x, y, spacing)
+        profiles[key] = (grid, top, x, y, spacing ** 2, h)
         if spec['experiment']:
             exp = np.loadtxt(os.path.join(root, spec['experiment']), delimiter=',', skiprows=1)
-            sim = surface(x, y, spacing, exp[:, 0], d)
+            sim = sph_surface.surface_height(x, y, spacing ** 2, h, exp[:, 0])
             entry['surface_rms_vs_experiment_m'] = float(np.sqrt(np.mean((sim - exp[:, 1]) ** 2)))
         results[key] = entry
     if 'fine' in profiles:
@@ -162,8 +163,8 @@ def analyse(directory, problem, root):
         reach = results['fine']['runout_m']
         at = grid_f[grid_f <= reach]
         ref = top_f[grid_f <= reach]
-        for key, (grid, top, x, y, spacing) in profiles.items():
-            sim = surface(x, y, spacing, at, d)
+        for key, (grid, top, x, y, volume, h) in profiles.items():
+            sim = sph_surface.surface_height(x, y, volume, h, at)
             results[key]['surface_rms_vs_fine_m'] = float(np.sqrt(np.mean((sim - ref) ** 2)))
     return results, profiles
 
