@@ -7,7 +7,7 @@ for each run, reports
   - peak_particles, final_particles: from the thermo output (walls included, same in every run);
   - surface_rms_vs_fine_m: RMS difference of the final free surface from the fine run's, over
     x in [0, the fine run's runout], the surface being the 0.5 level of the SPH volume fraction
-    (tools/sph_surface.py: the surface of the continuum the particles stand for; a particle of
+    (tools/sph_analysis.py: the surface of the continuum the particles stand for; a particle of
     level l has the volume (d 2^-l)^2 and h = 1.2 d alpha_r^l);
   - surface_rms_vs_experiment_m (aluminium bars only): the same against the measured surface;
   - runout_m: the furthest x where that surface stands higher than one coarse spacing (2 mm for
@@ -35,7 +35,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import sph_surface  # noqa: E402
+import sph_analysis  # noqa: E402
 
 PROBLEMS = {
     'bars': dict(d=0.002, height=0.1, times=(0.06, 0.11, 0.6), title='Aluminium bars (Bui et al. 2008)',
@@ -46,16 +46,6 @@ PROBLEMS = {
 RUNS = [('coarse', 'coarse'), ('fine', 'fine (static 0.5, 0.5)'),
         ('dynamic_0.5_0.5', 'dynamic (0.5, 0.5)'), ('dynamic_0.55_0.5', 'dynamic (0.55, 0.5)'),
         ('dynamic_0.55_0.6', 'dynamic (0.55, 0.6)'), ('dynamic_0.55_0.7', 'dynamic (0.55, 0.7)')]
-
-
-def read_dump(path):
-    with open(path) as f:
-        lines = f.read().splitlines()
-    start = max(i for i, l in enumerate(lines) if l.startswith('ITEM: ATOMS'))
-    names = lines[start].split()[2:]
-    rows = [l.split() for l in lines[start + 1:] if l.strip() and not l.startswith('ITEM')]
-    data = np.array(rows, dtype=float).reshape(-1, len(names))
-    return {n: data[:, k] for k, n in enumerate(names)}
 
 
 def read_log(path):
@@ -85,22 +75,6 @@ def smoothing_ratio(key):
     if key.startswith('dynamic_'):
         return float(key.split('_')[2])
     return 0.5
-
-
-def failure_angle(x0, y0, moved, d, height):
-    xs, ys = [], []
-    for xc in np.arange(x0.min(), x0.max() + 0.5 * d, d):
-        col = np.abs(x0 - xc) < 0.5 * d
-        if not col.any():
-            continue
-        still = col & ~moved
-        xs.append(xc)
-        ys.append(y0[still].max() + 0.5 * d if still.any() else 0.0)
-    xs, ys = np.array(xs), np.array(ys)
-    fit = (ys > 0.05 * height) & (ys < 0.95 * height)
-    if fit.sum() < 2:
-        return float('nan')
-    return math.degrees(math.atan(-np.polyfit(xs[fit], ys[fit], 1)[0]))
 
 
 def instability_index(x, y, spacing, cell):
@@ -141,21 +115,21 @@ def analyse(directory, problem, root):
             results[key] = entry
             continue
         entry['completed'] = True
-        s = read_dump(dump)
+        s = sph_analysis.read_dump(dump)
         level = s['c_soil[2]']
         spacing = d * 0.5 ** level
         h = 1.2 * d * smoothing_ratio(key) ** level
         x, y = s['x'], s['y']
-        entry['runout_m'], grid, top = sph_surface.runout(x, y, spacing ** 2, h, d, d)
+        entry['runout_m'], grid, top = sph_analysis.runout(x, y, spacing ** 2, h, d, d)
         moved = np.hypot(x - s['f_origin[1]'], y - s['f_origin[2]']) > 0.75 * d
-        entry['failure_angle_deg'] = round(failure_angle(s['f_origin[1]'], s['f_origin[2]'], moved, d,
-                                                         spec['height']), 2)
+        entry['failure_angle_deg'] = round(sph_analysis.failure_line(s['f_origin[1]'], s['f_origin[2]'], moved, d,
+                                                                      spec['height'])[2], 2)
         entry['instability_index'] = round(instability_index(x, y, spacing, d), 5)
         entry['soil_particles'] = int(len(x))
         profiles[key] = (grid, top, x, y, spacing ** 2, h)
         if spec['experiment']:
             exp = np.loadtxt(os.path.join(root, spec['experiment']), delimiter=',', skiprows=1)
-            sim = sph_surface.surface_height(x, y, spacing ** 2, h, exp[:, 0])
+            sim = sph_analysis.surface_height(x, y, spacing ** 2, h, exp[:, 0])
             entry['surface_rms_vs_experiment_m'] = float(np.sqrt(np.mean((sim - exp[:, 1]) ** 2)))
         results[key] = entry
     if 'fine' in profiles:
@@ -164,7 +138,7 @@ def analyse(directory, problem, root):
         at = grid_f[grid_f <= reach]
         ref = top_f[grid_f <= reach]
         for key, (grid, top, x, y, volume, h) in profiles.items():
-            sim = sph_surface.surface_height(x, y, volume, h, at)
+            sim = sph_analysis.surface_height(x, y, volume, h, at)
             results[key]['surface_rms_vs_fine_m'] = float(np.sqrt(np.mean((sim - ref) ** 2)))
     return results, profiles
 

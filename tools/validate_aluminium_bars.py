@@ -4,7 +4,7 @@
 Reads the LAMMPS dumps of examples/aluminium_bars (dump.initial: id type x y; dump.final:
 id type x y ...), computes
   - the final free surface: the 0.5 level of the SPH volume fraction of the particles
-    (tools/sph_surface.py; particle volume d^2, h = 1.2 d as set by the example), i.e. the
+    (tools/sph_analysis.py; particle volume d^2, h = 1.2 d as set by the example), i.e. the
     surface of the continuum the particles stand for, and its RMS difference from the measured
     surface at the measured x;
   - the runout: the furthest x at which that surface is higher than 2 mm;
@@ -27,18 +27,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import sph_surface  # noqa: E402
-
-
-def read_dump(path):
-    """Last snapshot of a LAMMPS text dump as a dict of column name -> numpy array."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    start = max(i for i, l in enumerate(lines) if l.startswith('ITEM: ATOMS'))
-    names = lines[start].split()[2:]
-    rows = [l.split() for l in lines[start + 1:] if l.strip() and not l.startswith('ITEM')]
-    data = np.array(rows, dtype=float).reshape(-1, len(names))
-    return {n: data[:, k] for k, n in enumerate(names)}
+import sph_analysis  # noqa: E402
 
 
 def read_csv(path):
@@ -60,27 +49,6 @@ def runout_particle_top(x, y, spacing, threshold=0.002):
     top = particle_top(x, y, edges, 0.5 * spacing)
     high = edges[top > threshold]
     return float(high.max() + 0.5 * spacing) if len(high) else 0.0
-
-
-def failure_line(x0, y0, moved, spacing, height):
-    """Per column, the top of the particles that moved less than the threshold."""
-    columns = np.arange(x0.min(), x0.max() + 0.5 * spacing, spacing)
-    xs, ys = [], []
-    for xc in columns:
-        col = np.abs(x0 - xc) < 0.5 * spacing
-        still = col & ~moved
-        if not col.any():
-            continue
-        top = y0[still].max() + 0.5 * spacing if still.any() else 0.0
-        xs.append(xc)
-        ys.append(top)
-    xs, ys = np.array(xs), np.array(ys)
-    fit = (ys > 0.05 * height) & (ys < 0.95 * height)
-    angle = float('nan')
-    if fit.sum() >= 2:
-        slope = np.polyfit(xs[fit], ys[fit], 1)[0]
-        angle = math.degrees(math.atan(-slope))
-    return xs, ys, angle
 
 
 def wall_seconds(directory):
@@ -110,8 +78,8 @@ def main():
     exp_dir = a.experiment or os.path.join(a.dir, 'experiment')
     surface_exp = read_csv(os.path.join(exp_dir, 'surface.csv'))
     failure_exp = read_csv(os.path.join(exp_dir, 'failure.csv'))
-    initial = read_dump(os.path.join(a.dir, 'dump.initial'))
-    final = read_dump(os.path.join(a.dir, 'dump.final'))
+    initial = sph_analysis.read_dump(os.path.join(a.dir, 'dump.initial'))
+    final = sph_analysis.read_dump(os.path.join(a.dir, 'dump.final'))
 
     order0 = np.argsort(initial['id'])
     order1 = np.argsort(final['id'])
@@ -122,14 +90,14 @@ def main():
     spacing = a.spacing or float(np.min(np.diff(np.unique(np.round(x0, 9)))))
 
     volume, h = spacing * spacing, 1.2 * spacing
-    sim_surface = sph_surface.surface_height(x1, y1, volume, h, surface_exp[:, 0])
+    sim_surface = sph_analysis.surface_height(x1, y1, volume, h, surface_exp[:, 0])
     surface_rms = float(np.sqrt(np.mean((sim_surface - surface_exp[:, 1]) ** 2)))
-    run, grid, grid_surface = sph_surface.runout(x1, y1, volume, h, 0.002, spacing)
+    run, grid, grid_surface = sph_analysis.runout(x1, y1, volume, h, 0.002, spacing)
     top_surface = particle_top(x1, y1, surface_exp[:, 0], spacing)
     top_rms = float(np.sqrt(np.mean((top_surface - surface_exp[:, 1]) ** 2)))
     top_run = runout_particle_top(x1, y1, spacing)
     moved = np.hypot(x1 - x0, y1 - y0) >= a.moved
-    fx, fy, angle = failure_line(x0, y0, moved, spacing, a.height)
+    fx, fy, angle = sph_analysis.failure_line(x0, y0, moved, spacing, a.height)
     exp_slope = np.polyfit(failure_exp[:, 0], failure_exp[:, 1], 1)[0]
     exp_angle = math.degrees(math.atan(-exp_slope))
 

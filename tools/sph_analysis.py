@@ -1,4 +1,7 @@
-"""Free surface of a 2D SPH particle set, as the continuum that the particles represent.
+"""Analysis of 2D SPH_SOIL dumps shared by tools/validate_aluminium_bars.py and
+tools/compare_refinement.py: reading a dump, the free surface, the runout, the failure line.
+
+Free surface: the surface of the continuum that the particles represent.
 
 The SPH volume fraction (Shepard sum) at a point,
 
@@ -12,13 +15,43 @@ but a single particle, or a scatter of particles that have left the body, has ph
 isolated particle reaches 0.32 at its centre with h = 1.2 d) and is not counted as material,
 while a continuous layer one particle thick is (its phi is 0.57 at its centre line).
 
-Used by tools/validate_aluminium_bars.py and tools/compare_refinement.py.
 """
 import math
 
 import numpy as np
 
 LEVEL = 0.5
+
+
+def read_dump(path):
+    """Last snapshot of a LAMMPS text dump as a dict of column name -> numpy array."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    start = max(i for i, l in enumerate(lines) if l.startswith('ITEM: ATOMS'))
+    names = lines[start].split()[2:]
+    rows = [l.split() for l in lines[start + 1:] if l.strip() and not l.startswith('ITEM')]
+    data = np.array(rows, dtype=float).reshape(-1, len(names))
+    return {n: data[:, k] for k, n in enumerate(names)}
+
+
+def failure_line(x0, y0, moved, spacing, height):
+    """The upper boundary of the soil that did not move, by initial position: per column of
+    width `spacing` the top of its unmoved particles (+ spacing/2), and the angle in degrees of
+    a straight-line fit over the columns where it lies between 5% and 95% of `height`."""
+    xs, ys = [], []
+    for xc in np.arange(x0.min(), x0.max() + 0.5 * spacing, spacing):
+        col = np.abs(x0 - xc) < 0.5 * spacing
+        if not col.any():
+            continue
+        still = col & ~moved
+        xs.append(xc)
+        ys.append(y0[still].max() + 0.5 * spacing if still.any() else 0.0)
+    xs, ys = np.array(xs), np.array(ys)
+    fit = (ys > 0.05 * height) & (ys < 0.95 * height)
+    angle = float('nan')
+    if fit.sum() >= 2:
+        angle = math.degrees(math.atan(-np.polyfit(xs[fit], ys[fit], 1)[0]))
+    return xs, ys, angle
 
 
 def kernel_2d(r, h):
