@@ -257,8 +257,7 @@ def main():
 
     page = ['Refinement comparison (generated)', '=' * 33, '',
             'Written by ``tools/compare_refinement.py`` from the runs of ``tools/run_refinement.sh``',
-            '(examples/refinement, 2 MPI ranks). Columns: see the script\'s docstring;',
-            'the discussion is in :doc:`fix sph/soil/refine <fix_sph_soil_refine>`.', '']
+            '(examples/refinement, 2 MPI ranks). Columns: see the script\'s docstring.', '']
     for problem in ('bars', 'collapse'):
         if problem not in summary:
             continue
@@ -266,6 +265,9 @@ def main():
         page += [title, '"' * len(title), '', table(problem, summary[problem]), '',
                  f'.. image:: img/refinement_{problem}_frames.png', '   :width: 100%', '',
                  f'.. image:: img/refinement_{problem}_surface.png', '   :width: 80%', '']
+    # the discussion of the numbers is written by hand beside the generated page
+    if os.path.exists(os.path.join(root, 'doc', 'refinement_comparison_notes.rst')):
+        page += ['.. include:: refinement_comparison_notes.rst', '']
     with open(os.path.join(root, 'doc', 'refinement_comparison.rst'), 'w') as f:
         f.write('\n'.join(page))
 
