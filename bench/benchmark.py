@@ -4,7 +4,7 @@ sph/taitwater and smd/ulsph on the same 2D layout (in.bench_*), as ratios from o
 
     bench/benchmark.py [--lmp build/lmp] [--repeat 1] [--json FILE] [--bars]
 
-Each input runs on 1 MPI rank; the best of --repeat runs counts. --bars also times the short
+Each input runs on 1 MPI rank; the best of --repeat runs counts, the styles taking turns. --bars also times the short
 aluminium-bar example on all cores. Prints JSON.
 """
 import argparse
@@ -60,14 +60,15 @@ def main():
 
     results = {}
     with tempfile.TemporaryDirectory() as work:
-        for name, infile in STYLES.items():
-            best = None
-            for _ in range(a.repeat):
+        # round robin: on a shared machine the speed drifts; each style gets a run in every
+        # round, so that the best runs of all styles come from the same conditions
+        for _ in range(a.repeat):
+            for name, infile in STYLES.items():
                 r = run(lmp, os.path.join(HERE, infile), work)
-                if best is None or r['seconds'] < best['seconds']:
-                    best = r
-            results[name] = best
-            print(f'benchmark: {name}: {best["particle_steps_per_second_per_core"]:.3g} '
+                if name not in results or r['seconds'] < results[name]['seconds']:
+                    results[name] = r
+        for name in STYLES:
+            print(f'benchmark: {name}: {results[name]["particle_steps_per_second_per_core"]:.3g} '
                   f'particle-steps/s/core', file=sys.stderr)
         if a.bars:
             ncores = os.cpu_count() or 1
