@@ -29,8 +29,8 @@ using SPHSoil::SoilMaterial;
 
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1), free_slip(false),
-    sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), nmax_factors(0),
-    stress_over_rho2(nullptr), volume(nullptr)
+    sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), nmax_packed(0),
+    packed(nullptr), sums(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -43,8 +43,8 @@ PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
 
 PairSPHSoil::~PairSPHSoil()
 {
-  memory->destroy(stress_over_rho2);
-  memory->destroy(volume);
+  memory->destroy(packed);
+  memory->destroy(sums);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -294,27 +294,65 @@ void PairSPHSoil::compute(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
-   per-atom factors of the pair sums, once per step for owned and ghost atoms:
-   sigma/rho^2 (the momentum equation) and the volume m/rho (the velocity gradient)
+   per-atom inputs of the pair sums, once per step for owned and ghost atoms,
+   packed into one row of PACKED doubles per atom (see the header): a
+   neighbour then costs two cache lines instead of a load from each of
+   eight arrays; and the accumulators of the sums, set to zero
 ------------------------------------------------------------------------- */
 
-void PairSPHSoil::prepare_atom_factors()
+template <int DIMENSION> void PairSPHSoil::pack_atoms()
 {
   const int nall = atom->nlocal + atom->nghost;
-  if (nall > nmax_factors) {
-    nmax_factors = atom->nmax;
-    memory->destroy(stress_over_rho2);
-    memory->destroy(volume);
-    memory->create(stress_over_rho2, nmax_factors, 6, "pair:stress_over_rho2");
-    memory->create(volume, nmax_factors, "pair:volume");
+  if (nall > nmax_packed) {
+    nmax_packed = atom->nmax;
+    memory->destroy(packed);
+    memory->destroy(sums);
+    memory->create(packed, nmax_packed * PACKED, "pair:packed");
+    memory->create(sums, nmax_packed * SUMS, "pair:sums");
   }
-  const double *rho = atom->rho, *rmass = atom->rmass;
-  double **stress = avec->stress;
+  double **x = atom->x, **vest = atom->vest, **stress = avec->stress;
+  const double *rho = atom->rho, *rmass = atom->rmass, *h = avec->smoothing_length;
   for (int i = 0; i < nall; i++) {
+    double *row = packed + (size_t) i * PACKED;
     const double inv_rho = 1.0 / rho[i];
     const double inv_rho2 = inv_rho * inv_rho;
-    for (int k = 0; k < 6; k++) stress_over_rho2[i][k] = stress[i][k] * inv_rho2;
-    volume[i] = rmass[i] * inv_rho;
+    for (int a = 0; a < 3; a++) {
+      row[P_X + a] = x[i][a];
+      row[P_V + a] = vest[i][a];
+    }
+    for (int k = 0; k < 6; k++) row[P_STRESS + k] = stress[i][k] * inv_rho2;
+    row[P_VOLUME] = rmass[i] * inv_rho;
+    row[P_MASS] = rmass[i];
+    row[P_RHO] = rho[i];
+    row[P_H] = h[i];
+  }
+  if (nall > 0) memset(sums, 0, sizeof(double) * SUMS * nall);
+}
+
+/* ----------------------------------------------------------------------
+   the sums into the atoms' arrays (owned and ghost: the atom style's reverse
+   communication then brings the ghosts' shares to their owners)
+------------------------------------------------------------------------- */
+
+template <int DIMENSION> void PairSPHSoil::unpack_sums()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  double **f = atom->f, **strain_rate = avec->strain_rate, **spin = avec->spin;
+  double *drho = atom->drho;
+  for (int i = 0; i < nall; i++) {
+    const double *sum = sums + (size_t) i * SUMS;
+    for (int a = 0; a < DIMENSION; a++) f[i][a] += sum[S_FORCE + a];
+    drho[i] += sum[S_DRHO<DIMENSION>()];
+    const double *e = sum + S_STRAIN_RATE<DIMENSION>(), *w = sum + S_SPIN<DIMENSION>();
+    if (DIMENSION == 2) {
+      strain_rate[i][0] += e[0];
+      strain_rate[i][1] += e[1];
+      strain_rate[i][3] += e[2];
+      spin[i][0] += w[0];
+    } else {
+      for (int k = 0; k < 6; k++) strain_rate[i][k] += e[k];
+      for (int k = 0; k < 3; k++) spin[i][k] += w[k];
+    }
   }
 }
 
@@ -327,22 +365,13 @@ void PairSPHSoil::prepare_atom_factors()
 
 template <int DIMENSION> void PairSPHSoil::eval()
 {
-  double **x = atom->x;
-  double **f = atom->f;
-  double **vest = atom->vest;
-  const double *rho = atom->rho;
-  double *drho = atom->drho;
-  const double *rmass = atom->rmass;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
-  const double *h = avec->smoothing_length;
-  double **strain_rate = avec->strain_rate;
-  double **spin = avec->spin;
   double **wall_normal = avec->wall_normal;
   const double *wall_distance = avec->wall_distance;
-  // members as locals: the stores to f, drho and the rates (double *) could otherwise alias
-  // the double members, which the compiler would then reload for every pair
+  // members as locals: the stores to the sums (double *) could otherwise alias the double
+  // members, which the compiler would then reload for every pair
   const double alpha = viscosity_alpha, beta_viscosity = viscosity_beta;
   const bool freeslip = free_slip;
   double *const *const c_type = sound_speed_ij;
@@ -354,9 +383,11 @@ template <int DIMENSION> void PairSPHSoil::eval()
     return n * (beta_viscosity * n - alpha * c * d) / (d * d * rhobar);
   };
 
-  prepare_atom_factors();    // (re)allocates the per-atom factors: take their addresses after it
-  const double *const volumes = volume;
-  double *const *const stress_factor = stress_over_rho2;
+  pack_atoms<DIMENSION>();    // (re)allocates the packed rows: take their addresses after it
+  const double *const in = packed;
+  double *const out = sums;
+  constexpr int DRHO = S_DRHO<DIMENSION>(), STRAIN = S_STRAIN_RATE<DIMENSION>(),
+                SPIN = S_SPIN<DIMENSION>();
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -367,13 +398,17 @@ template <int DIMENSION> void PairSPHSoil::eval()
   static const int voigt[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
 
   // add the velocity-gradient term t^ab = (v_j - v_i)^a dW/dx_i^b, weighted, to a particle
+  // (strain rate in the sums' Voigt order: xx yy xy in 2D, xx yy zz xy xz yz in 3D)
   auto add_gradient = [&](int k, double weight, const double t[3][3]) {
-    double *e = strain_rate[k], *w = spin[k];
+    double *e = out + (size_t) k * SUMS + STRAIN, *w = out + (size_t) k * SUMS + SPIN;
     e[0] += weight * t[0][0];
     e[1] += weight * t[1][1];
-    e[3] += weight * 0.5 * (t[0][1] + t[1][0]);
-    w[0] += weight * 0.5 * (t[0][1] - t[1][0]);
-    if (DIMENSION == 3) {
+    if (DIMENSION == 2) {
+      e[2] += weight * 0.5 * (t[0][1] + t[1][0]);
+      w[0] += weight * 0.5 * (t[0][1] - t[1][0]);
+    } else {
+      e[3] += weight * 0.5 * (t[0][1] + t[1][0]);
+      w[0] += weight * 0.5 * (t[0][1] - t[1][0]);
       e[2] += weight * t[2][2];
       e[4] += weight * 0.5 * (t[0][2] + t[2][0]);
       e[5] += weight * 0.5 * (t[1][2] + t[2][1]);
@@ -386,11 +421,12 @@ template <int DIMENSION> void PairSPHSoil::eval()
     const int i = ilist[ii];
     const int itype = type[i];
     const bool wall_i = is_wall[itype];
-    const double *xi = x[i];
-    const double hi = h[i];
-    const double *vi = vest[i];
-    const double *si = stress_factor[i];
-    const double mi = rmass[i], rhoi = rho[i], volume_i = volumes[i];
+    const double *pi = in + (size_t) i * PACKED;
+    const double *xi = pi + P_X;
+    const double hi = pi[P_H];
+    const double *vi = pi + P_V;
+    const double *si = pi + P_STRESS;
+    const double mi = pi[P_MASS], rhoi = pi[P_RHO], volume_i = pi[P_VOLUME];
 
     // i's shares of soil-soil pairs, accumulated here and stored once after the j loop
     double drho_i = 0.0, force_i[3] = {0.0, 0.0, 0.0};
@@ -403,9 +439,11 @@ template <int DIMENSION> void PairSPHSoil::eval()
       const int jtype = type[j];
       const bool wall_j = is_wall[jtype];
       if (wall_i && wall_j) continue;
-      double dx[3] = {xi[0] - x[j][0], xi[1] - x[j][1], DIMENSION == 3 ? xi[2] - x[j][2] : 0.0};
+      const double *pj = in + (size_t) j * PACKED;
+      double dx[3] = {xi[0] - pj[P_X], xi[1] - pj[P_X + 1],
+                      DIMENSION == 3 ? xi[2] - pj[P_X + 2] : 0.0};
       const double r2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
-      const double hij = 0.5 * (hi + h[j]);
+      const double hij = 0.5 * (hi + pj[P_H]);
       if (r2 >= 4.0 * hij * hij) continue;
 
       // the square root and the two divisions are independent of each other, so that the
@@ -424,20 +462,22 @@ template <int DIMENSION> void PairSPHSoil::eval()
         double vdotgrad = 0.0, vdotx = 0.0;
         for (int a = 0; a < DIMENSION; a++) {
           grad[a] = factor * dx[a];
-          vij[a] = vi[a] - vest[j][a];
+          vij[a] = vi[a] - pj[P_V + a];
           vdotgrad += vij[a] * grad[a];
           vdotx += vij[a] * dx[a];
         }
-        const double mj = rmass[j];
+        const double mj = pj[P_MASS];
         const bool update_j = newton_pair || j < nlocal;
+        double *oj = out + (size_t) j * SUMS;
         drho_i += mj * vdotgrad;
-        if (update_j) drho[j] += mi * vdotgrad;
+        if (update_j) oj[DRHO] += mi * vdotgrad;
 
         // Monaghan artificial viscosity, only for approaching pairs
         double viscosity = 0.0;
         if (vdotx < 0.0)
-          viscosity = monaghan_viscosity(hij * vdotx, r2 + 0.01 * hij * hij, 0.5 * (rhoi + rho[j]), c_ij);
-        const double *sj = stress_factor[j];
+          viscosity =
+              monaghan_viscosity(hij * vdotx, r2 + 0.01 * hij * hij, 0.5 * (rhoi + pj[P_RHO]), c_ij);
+        const double *sj = pj + P_STRESS;
         const double mimj = mi * mj;
         double pair_force[3];
         if (DIMENSION == 2) {
@@ -457,12 +497,12 @@ template <int DIMENSION> void PairSPHSoil::eval()
         }
         for (int a = 0; a < DIMENSION; a++) {
           force_i[a] += pair_force[a];
-          if (update_j) f[j][a] -= pair_force[a];
+          if (update_j) oj[S_FORCE + a] -= pair_force[a];
         }
 
         // g_i += V_j (v_j - v_i) x grad, and g_j += V_i (v_i - v_j) x (-grad): the same tensor
         double t[3][3];
-        const double volume_j = volumes[j];
+        const double volume_j = pj[P_VOLUME];
         for (int a = 0; a < DIMENSION; a++)
           for (int b = 0; b < DIMENSION; b++) {
             t[a][b] = -vij[a] * grad[b];
@@ -477,6 +517,8 @@ template <int DIMENSION> void PairSPHSoil::eval()
       // and takes the stress and density of s
       const int soil = wall_i ? j : i, wall = wall_i ? i : j;
       if (!newton_pair && soil >= nlocal) continue;
+      const double *ps = in + (size_t) soil * PACKED;
+      double *os = out + (size_t) soil * SUMS;
       const double sign = wall_i ? -1.0 : 1.0;    // x_s - x_w = sign * dx
       double d[3], grad[3];
       for (int a = 0; a < DIMENSION; a++) {
@@ -487,7 +529,7 @@ template <int DIMENSION> void PairSPHSoil::eval()
       double ds = -wall_distance[wall];
       for (int a = 0; a < DIMENSION; a++) ds += d[a] * n[a];
       const double beta = ds > 0.0 ? MIN(1.5, 1.0 + wall_distance[wall] / ds) : 1.5;
-      const double *vs = vest[soil];
+      const double *vs = ps + P_V;
       double vsw[3];
       if (freeslip) {
         double vn = 0.0;
@@ -501,16 +543,16 @@ template <int DIMENSION> void PairSPHSoil::eval()
         vdotgrad += vsw[a] * grad[a];
         vdotx += vsw[a] * d[a];
       }
-      const double mw = rmass[wall], rhos = rho[soil];
-      drho[soil] += mw * vdotgrad;
+      const double mw = in[(size_t) wall * PACKED + P_MASS], rhos = ps[P_RHO];
+      os[DRHO] += mw * vdotgrad;
       double viscosity = 0.0;
       if (vdotx < 0.0) viscosity = monaghan_viscosity(hij * vdotx, r2 + 0.01 * hij * hij, rhos, c_ij);
-      const double *ss = stress_factor[soil];
-      const double mswall = rmass[soil] * mw;
+      const double *ss = ps + P_STRESS;
+      const double mswall = ps[P_MASS] * mw;
       for (int a = 0; a < DIMENSION; a++) {
         double sum = -viscosity * grad[a];
         for (int b = 0; b < DIMENSION; b++) sum += 2.0 * ss[voigt[a][b]] * grad[b];
-        f[soil][a] += mswall * sum;
+        os[S_FORCE + a] += mswall * sum;
       }
       double t[3][3];
       for (int a = 0; a < DIMENSION; a++)
@@ -518,11 +560,18 @@ template <int DIMENSION> void PairSPHSoil::eval()
       add_gradient(soil, mw / rhos, t);
     }
 
-    drho[i] += drho_i;
-    for (int a = 0; a < DIMENSION; a++) f[i][a] += force_i[a];
+    double *oi = out + (size_t) i * SUMS;
+    oi[DRHO] += drho_i;
+    for (int a = 0; a < DIMENSION; a++) oi[S_FORCE + a] += force_i[a];
     add_gradient(i, 1.0, gradient_i);
   }
+
+  unpack_sums<DIMENSION>();
 }
 
 template void PairSPHSoil::eval<2>();
 template void PairSPHSoil::eval<3>();
+template void PairSPHSoil::pack_atoms<2>();
+template void PairSPHSoil::pack_atoms<3>();
+template void PairSPHSoil::unpack_sums<2>();
+template void PairSPHSoil::unpack_sums<3>();

@@ -56,10 +56,21 @@ class PairSPHSoil : public Pair {
   double max_h;                                    // largest smoothing length at init
   std::vector<std::unique_ptr<SPHSoil::ConstitutiveModel>> models;    // per atom type
   class AtomVecSPHSoil *avec;
-  int nmax_factors;
-  double **stress_over_rho2;    // sigma / rho^2 of owned and ghost atoms, this step
-  double *volume;               // m / rho
-  void prepare_atom_factors();
+  // The pair loop's per-atom inputs, one row of PACKED doubles per owned and ghost atom:
+  // position, velocity estimate, stress / rho^2 (Voigt), volume m / rho, mass, density, h
+  enum { P_X = 0, P_V = 3, P_STRESS = 6, P_VOLUME = 12, P_MASS = 13, P_RHO = 14, P_H = 15,
+         PACKED = 16 };
+  // and its sums, one row of SUMS doubles per atom: force, density rate, strain rate
+  // (2D: xx yy xy; 3D: Voigt), spin (2D: xy; 3D: xy xz yz)
+  enum { S_FORCE = 0, SUMS = 16 };
+  template <int DIMENSION> static constexpr int S_DRHO() { return DIMENSION; }
+  template <int DIMENSION> static constexpr int S_STRAIN_RATE() { return DIMENSION + 1; }
+  template <int DIMENSION> static constexpr int S_SPIN() { return DIMENSION == 2 ? 6 : 10; }
+  int nmax_packed;
+  double *packed;
+  double *sums;
+  template <int DIMENSION> void pack_atoms();
+  template <int DIMENSION> void unpack_sums();
 
   void allocate();
   void set_type_material(int type, const SPHSoil::SoilMaterial &material);
