@@ -168,6 +168,57 @@ TEST(DruckerPrager, ConstantsModuliAndWaveSpeed)
   EXPECT_NEAR(frictionless.k_c(), 5.0e3, 1.0e-9);
 }
 
+// the plane-strain fit for psi = 0: alpha = sin(phi)/3, k_c = c cos(phi); equal at phi = 0
+TEST(DruckerPrager, NonassociatedFitConstants)
+{
+  DruckerPragerParameters p = soil(30.0, 0.0, 2.0e4);
+  p.fit = DruckerPragerFit::nonassociated;
+  const DruckerPrager model(p);
+  EXPECT_NEAR(model.alpha_phi(), 0.5 / 3.0, 1.0e-15);
+  EXPECT_NEAR(model.k_c(), 2.0e4 * std::sqrt(3.0) / 2.0, 1.0e-9);
+  // Bui's aluminium bars: 2% stronger than the associated fit
+  DruckerPragerParameters bars = soil(19.8, 0.0, 0.0, 0.7e6);
+  const double associated = DruckerPrager(bars).alpha_phi();
+  bars.fit = DruckerPragerFit::nonassociated;
+  EXPECT_NEAR(DruckerPrager(bars).alpha_phi() / associated, 1.0189, 1.0e-4);
+  DruckerPragerParameters frictionless = soil(0.0, 0.0, 5.0e3);
+  frictionless.fit = DruckerPragerFit::nonassociated;
+  EXPECT_EQ(DruckerPrager(frictionless).alpha_phi(), 0.0);
+  EXPECT_NEAR(DruckerPrager(frictionless).k_c(), 5.0e3, 1.0e-9);
+}
+
+// Plane-strain simple shear from an isotropic stress keeps s_zz = 0 (no dilatancy, no
+// volume change), so sqrt(J2) is the in-plane maximum shear stress. On the surface the
+// nonassociated fit then reproduces Mohr-Coulomb exactly, tau = c cos(phi) - sigma_m sin(phi);
+// the associated fit is weaker by 3 alpha_phi against sin(phi).
+TEST(DruckerPrager, NonassociatedFitIsMohrCoulombInPlaneStrainWithoutDilatancy)
+{
+  const double gammadot = 1.0, dt = 1.0e-5, p0 = 1.0e5, phi = 30.0, c = 5.0e3;
+  const double strain_rate[6] = {0.0, 0.0, 0.0, 0.5 * gammadot, 0.0, 0.0};
+  const double spin[3] = {0.5 * gammadot, 0.0, 0.0};
+  double strength[2];
+  for (int k = 0; k < 2; k++) {
+    DruckerPragerParameters p = soil(phi, 0.0, c);
+    p.fit = k ? DruckerPragerFit::nonassociated : DruckerPragerFit::associated;
+    const DruckerPrager model(p);
+    double stress[6] = {-p0, -p0, -p0, 0.0, 0.0, 0.0};
+    for (int n = 0; n < 20000; n++) {    // shear strain 0.2, far past first yield
+      double rate[6];
+      model.stress_rate(stress, strain_rate, spin, rate);
+      for (int m = 0; m < 6; m++) stress[m] += dt * rate[m];
+      model.return_to_admissible(stress);
+    }
+    ASSERT_TRUE(model.on_yield_surface(stress));
+    const double mean = 0.5 * (stress[0] + stress[1]);
+    EXPECT_NEAR(stress[2], mean, 1.0e-9 * p0);    // s_zz = 0
+    const double half_difference = 0.5 * (stress[0] - stress[1]);
+    const double tau = std::sqrt(half_difference * half_difference + stress[3] * stress[3]);
+    strength[k] = tau / (c * std::cos(phi * PI / 180.0) - mean * std::sin(phi * PI / 180.0));
+  }
+  EXPECT_NEAR(strength[1], 1.0, 1.0e-9);
+  EXPECT_NEAR(strength[0], 0.96, 0.01);    // 3 tan(phi)/sqrt(9 + 12 tan^2 phi) / sin(phi) = 0.961
+}
+
 TEST(DruckerPrager, CheckNamesTheParameterAndItsRange)
 {
   EXPECT_EQ(DruckerPrager::check(soil(30.0, 0.0, 0.0)), "");

@@ -8,6 +8,7 @@
 #include "force.h"
 #include "compute.h"
 #include "modify.h"
+#include "pair_sph_soil.h"
 #include "update.h"
 
 #include <cmath>
@@ -334,12 +335,14 @@ TEST_F(SoilPhysics, BadPairInput)
                       command("pair_coeff * * bui2008.soil granite wall"));
   EXPECT_LAMMPS_ERROR(".*Cannot open material file nosuchfile.soil for pair_coeff sph/soil.*",
                       command("pair_coeff * * nosuchfile.soil sand wall"));
-  EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil keyword gamma \\(allowed: alpha, beta, wall\\).*",
+  EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil keyword gamma \\(allowed: alpha, beta, wall, fit\\).*",
                       command("pair_style sph/soil gamma 1"));
   EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil alpha -1: must be >= 0.*",
                       command("pair_style sph/soil alpha -1"));
   EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil wall sticky: must be noslip or freeslip.*",
                       command("pair_style sph/soil wall sticky"));
+  EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil fit tresca: must be associated or nonassociated.*",
+                      command("pair_style sph/soil fit tresca"));
 }
 
 TEST_F(SoilPhysics, BadRunSetups)
@@ -379,6 +382,29 @@ TEST_F(SoilPhysics, IntegratingAnotherAtomStyleIsAnError)
   EXPECT_LAMMPS_ERROR(".*Fix sph/soil requires atom_style sph/soil.*", command("fix f all sph/soil"));
   EXPECT_LAMMPS_ERROR(".*Compute sph/soil/atom requires atom_style sph/soil.*",
                       command("compute c all sph/soil/atom"));
+}
+
+// pair_style ... fit nonassociated reaches the model the integrator uses; a repeated
+// pair_style without it goes back to the default
+TEST_F(SoilPhysics, FitKeywordPicksTheDruckerPragerFit)
+{
+  HIDE_OUTPUT([&] { command("variable vx atom 0.0"); });
+  periodic_patch();
+  soil_run_setup();
+  auto alpha_phi = [&]() {
+    HIDE_OUTPUT([&] { command("run 0 post no"); });
+    auto pair = dynamic_cast<LAMMPS_NS::PairSPHSoil *>(lmp->force->pair);
+    EXPECT_NE(pair, nullptr);
+    auto model = dynamic_cast<const SPHSoil::DruckerPrager *>(pair->model(1));
+    EXPECT_NE(model, nullptr);
+    return model ? model->alpha_phi() : 0.0;
+  };
+  const double phi = 19.8 * M_PI / 180.0;
+  EXPECT_NEAR(alpha_phi(), std::tan(phi) / std::sqrt(9.0 + 12.0 * std::tan(phi) * std::tan(phi)), 1e-15);
+  HIDE_OUTPUT([&] { command("pair_style sph/soil fit nonassociated"); });
+  EXPECT_NEAR(alpha_phi(), std::sin(phi) / 3.0, 1e-15);
+  HIDE_OUTPUT([&] { command("pair_style sph/soil alpha 0.1"); });
+  EXPECT_NEAR(alpha_phi(), std::tan(phi) / std::sqrt(9.0 + 12.0 * std::tan(phi) * std::tan(phi)), 1e-15);
 }
 
 TEST_F(SoilPhysics, ComputeGivesInvariantsAndStrainMeasure)

@@ -29,6 +29,7 @@ using SPHSoil::SoilMaterial;
 
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1), free_slip(false),
+    drucker_prager_fit(SPHSoil::DruckerPragerFit::associated),
     sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), nmax_packed(0),
     packed(nullptr), sums(nullptr)
 {
@@ -73,6 +74,10 @@ void PairSPHSoil::allocate()
 
 void PairSPHSoil::settings(int narg, char **arg)
 {
+  // a repeated pair_style command starts again from the defaults
+  viscosity_alpha = viscosity_beta = 0.1;
+  free_slip = false;
+  drucker_prager_fit = SPHSoil::DruckerPragerFit::associated;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style sph/soil command: keyword {} needs a value", arg[iarg]);
@@ -90,8 +95,16 @@ void PairSPHSoil::settings(int narg, char **arg)
       else
         error->all(FLERR, "Illegal pair_style sph/soil wall {}: must be noslip or freeslip",
                    arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "fit") == 0) {
+      if (strcmp(arg[iarg + 1], "associated") == 0)
+        drucker_prager_fit = SPHSoil::DruckerPragerFit::associated;
+      else if (strcmp(arg[iarg + 1], "nonassociated") == 0)
+        drucker_prager_fit = SPHSoil::DruckerPragerFit::nonassociated;
+      else
+        error->all(FLERR, "Illegal pair_style sph/soil fit {}: must be associated or nonassociated",
+                   arg[iarg + 1]);
     } else {
-      error->all(FLERR, "Illegal pair_style sph/soil keyword {} (allowed: alpha, beta, wall)",
+      error->all(FLERR, "Illegal pair_style sph/soil keyword {} (allowed: alpha, beta, wall, fit)",
                  arg[iarg]);
     }
   }
@@ -239,7 +252,8 @@ void PairSPHSoil::init_style()
   models.clear();
   models.resize(atom->ntypes + 1);
   for (int t = 1; t <= atom->ntypes; t++)
-    if (type_set[t] && !materials[t].wall) models[t] = SPHSoil::make_constitutive_model(materials[t]);
+    if (type_set[t] && !materials[t].wall) 
+      models[t] = SPHSoil::make_constitutive_model(materials[t], drucker_prager_fit);
 
   // a half list: each pair once, shares to both particles (see eval())
   SphSoilCompat::request_half_neighbor_list(neighbor, this, instance_me);

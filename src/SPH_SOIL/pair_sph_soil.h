@@ -49,6 +49,7 @@ class PairSPHSoil : public Pair {
  protected:
   double viscosity_alpha, viscosity_beta;    // Monaghan artificial viscosity
   bool free_slip;                            // walls: reverse only the normal velocity
+  SPHSoil::DruckerPragerFit drucker_prager_fit;    // plane-strain fit to Mohr-Coulomb
   std::vector<SPHSoil::SoilMaterial> materials;    // per atom type, index 1..ntypes
   std::vector<int> type_set;                       // 1 once pair_coeff gave the type a material
   std::vector<int> type_is_wall;                   // per type, for the pair loop

@@ -110,11 +110,17 @@ DruckerPrager::DruckerPrager(const DruckerPragerParameters &parameters) : params
   const double nu = params.poisson_ratio;
   shear = 3.0 * bulk * (1.0 - 2.0 * nu) / (2.0 * (1.0 + nu));
 
-  // plane-strain match of Drucker-Prager to Mohr-Coulomb
-  const double tan_phi = std::tan(params.friction_angle * DEG2RAD);
-  const double root = std::sqrt(9.0 + 12.0 * tan_phi * tan_phi);
-  alpha = tan_phi / root;
-  kc = 3.0 * params.cohesion / root;
+  // plane-strain match of Drucker-Prager to Mohr-Coulomb (see the header)
+  const double phi = params.friction_angle * DEG2RAD;
+  if (params.fit == DruckerPragerFit::nonassociated) {
+    alpha = std::sin(phi) / 3.0;
+    kc = params.cohesion * std::cos(phi);
+  } else {
+    const double tan_phi = std::tan(phi);
+    const double root = std::sqrt(9.0 + 12.0 * tan_phi * tan_phi);
+    alpha = tan_phi / root;
+    kc = 3.0 * params.cohesion / root;
+  }
 
   sin_psi = std::sin(params.dilatancy_angle * DEG2RAD);
   flow_volumetric = 9.0 * bulk * sin_psi;
@@ -235,7 +241,8 @@ double DruckerPrager::wave_speed(double reference_density) const
 
 /* ---------------------------------------------------------------------- */
 
-std::unique_ptr<ConstitutiveModel> SPHSoil::make_constitutive_model(const SoilMaterial &material)
+std::unique_ptr<ConstitutiveModel> SPHSoil::make_constitutive_model(const SoilMaterial &material,
+                                                                    DruckerPragerFit fit)
 {
   if (material.wall) return std::unique_ptr<ConstitutiveModel>();
   DruckerPragerParameters parameters;
@@ -244,6 +251,7 @@ std::unique_ptr<ConstitutiveModel> SPHSoil::make_constitutive_model(const SoilMa
   parameters.friction_angle = material.friction_angle;
   parameters.dilatancy_angle = material.dilatancy_angle;
   parameters.cohesion = material.cohesion;
+  parameters.fit = fit;
   return std::unique_ptr<ConstitutiveModel>(new DruckerPrager(parameters));
 }
 

@@ -97,10 +97,17 @@ class ConstitutiveModel {
    Drucker-Prager, non-associated, perfectly plastic, plane-strain fit to
    Mohr-Coulomb (Bui et al. 2008; SPEC.md section 3):
      f = sqrt(J2) + alpha_phi I1 - k_c,   g = sqrt(J2) + 3 I1 sin(psi)
-     alpha_phi = tan(phi)/sqrt(9 + 12 tan^2 phi),  k_c = 3c/sqrt(9 + 12 tan^2 phi)
+   with one of two plane-strain fits (DruckerPragerFit):
+     associated (SPEC, Bui 2008; exact for associated flow, psi = phi):
+       alpha_phi = tan(phi)/sqrt(9 + 12 tan^2 phi),  k_c = 3c/sqrt(9 + 12 tan^2 phi)
+     nonassociated (exact for psi = 0: no plastic volume change, so s_zz = 0
+     on the surface and sqrt(J2) is the in-plane maximum shear stress):
+       alpha_phi = sin(phi)/3,  k_c = c cos(phi)
    phi = 0 gives a pressure-independent (von Mises-like) surface sqrt(J2) <= c
-   with no tension cap.
+   with no tension cap (both fits agree there).
 ------------------------------------------------------------------------- */
+
+enum class DruckerPragerFit { associated, nonassociated };
 
 struct DruckerPragerParameters {
   double bulk_modulus = 0.0;       // K (Pa)
@@ -108,6 +115,7 @@ struct DruckerPragerParameters {
   double friction_angle = 0.0;     // phi (degrees)
   double dilatancy_angle = 0.0;    // psi (degrees)
   double cohesion = 0.0;           // c (Pa)
+  DruckerPragerFit fit = DruckerPragerFit::associated;    // plane-strain fit to Mohr-Coulomb
 
   // the same from Young's modulus: K = E / (3 (1 - 2 nu))
   static DruckerPragerParameters from_young_modulus(double young_modulus, double poisson_ratio,
@@ -154,10 +162,12 @@ class DruckerPrager final : public ConstitutiveModel {
   double p_modulus;            // K + 4G/3
 };
 
-// The model of a soil material (nullptr for a wall). Today always Drucker-Prager;
-// this is where a material keyword would pick another model.
+// The model of a soil material (nullptr for a wall). Today always Drucker-Prager, with the
+// given fit to Mohr-Coulomb; this is where a material keyword would pick another model.
 // Throws std::invalid_argument if the material's parameters are not admissible.
-std::unique_ptr<ConstitutiveModel> make_constitutive_model(const SoilMaterial &material);
+std::unique_ptr<ConstitutiveModel>
+make_constitutive_model(const SoilMaterial &material,
+                        DruckerPragerFit fit = DruckerPragerFit::associated);
 
 }    // namespace SPHSoil
 
