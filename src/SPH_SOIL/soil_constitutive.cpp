@@ -201,9 +201,14 @@ bool DruckerPrager::return_to_admissible(double stress[6]) const
 
   // (2) stress scaling. After (1), k_c - alpha I1 may be a round-off below 0:
   // clamp it, a negative factor would flip the deviator.
-  const double radius = std::fmax(0.0, kc - alpha * i1);
+  const double distance = kc - alpha * i1;
+  const double radius = distance > 0.0 ? distance : 0.0;
+  // most particles are well inside: no square root for them (the margin keeps the
+  // decision identical to the exact test below)
+  const double j2 = second_invariant(stress);
+  if (j2 <= (1.0 - 1.0e-12) * radius * radius) return changed;
   const double mean = i1 / 3.0;
-  const double root_j2 = sqrt_j2(stress);
+  const double root_j2 = std::sqrt(j2);
   if (root_j2 > radius) {
     const double factor = radius / root_j2;
     for (int k = 0; k < 3; k++) stress[k] = mean + factor * (stress[k] - mean);

@@ -49,14 +49,19 @@ inline double pressure(const double stress[6])
   return -mean_stress(stress);
 }
 
-// sqrt(J2), J2 = s^ab s^ab / 2 with s the deviatoric stress; the shear
-// components count twice in the full contraction
-inline double sqrt_j2(const double stress[6])
+// J2 = s^ab s^ab / 2 with s the deviatoric stress; the shear components count
+// twice in the full contraction
+inline double second_invariant(const double stress[6])
 {
   const double mean = mean_stress(stress);
   const double sxx = stress[0] - mean, syy = stress[1] - mean, szz = stress[2] - mean;
-  return std::sqrt(0.5 * (sxx * sxx + syy * syy + szz * szz) + stress[3] * stress[3] +
-                   stress[4] * stress[4] + stress[5] * stress[5]);
+  return 0.5 * (sxx * sxx + syy * syy + szz * szz) + stress[3] * stress[3] +
+         stress[4] * stress[4] + stress[5] * stress[5];
+}
+
+inline double sqrt_j2(const double stress[6])
+{
+  return std::sqrt(second_invariant(stress));
 }
 
 // the paper's refinement measure of the total strain: eps_xx^2 + eps_yy^2 + eps_zz^2
