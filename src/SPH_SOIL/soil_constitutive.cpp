@@ -159,9 +159,15 @@ void DruckerPrager::stress_rate(const double stress[6], const double strain_rate
   const double mean = i1 / 3.0;
   const double deviator[6] = {stress[0] - mean, stress[1] - mean, stress[2] - mean,
                               stress[3], stress[4], stress[5]};
-  const double root_j2 = std::sqrt(
+  const double j2 =
       0.5 * (deviator[0] * deviator[0] + deviator[1] * deviator[1] + deviator[2] * deviator[2]) +
-      deviator[3] * deviator[3] + deviator[4] * deviator[4] + deviator[5] * deviator[5]);
+      deviator[3] * deviator[3] + deviator[4] * deviator[4] + deviator[5] * deviator[5];
+  // well inside the surface (the test below, made certain without the square root by
+  // bounding its tolerance from above with sqrt(J2) <= radius): elastic
+  const double radius = kc - alpha * i1;
+  const double margin = radius - YIELD_TOLERANCE * (radius + alpha * std::fabs(i1) + kc);
+  if (margin > 0.0 && j2 < (1.0 - 1.0e-12) * margin * margin) return;
+  const double root_j2 = std::sqrt(j2);
   if (!(root_j2 > 0.0)) return;
   const double f = root_j2 + alpha * i1 - kc;
   if (f < -YIELD_TOLERANCE * (root_j2 + alpha * std::fabs(i1) + kc)) return;
