@@ -372,6 +372,23 @@ TEST_F(SoilPhysics, BadRunSetups)
                       command("fix bad all sph/soil cfl 2"));
 }
 
+// A run that goes unstable stops at once and names a particle and the step, rather than
+// carrying NaN on. Here one particle's density of 1e-300 makes its stress/rho^2 infinite.
+TEST_F(SoilPhysics, UnstableRunStopsNamingParticleAndStep)
+{
+  if (nprocs() > 1) GTEST_SKIP() << "the check is per particle (error->one): 1 rank only";
+  HIDE_OUTPUT([&] { command("variable vx atom 0.0"); });
+  periodic_patch();
+  soil_run_setup();
+  HIDE_OUTPUT([&] {
+    command("group one id 37");
+    command("sph_soil/set one density 1e-300");
+  });
+  EXPECT_LAMMPS_ERROR(".*Fix sph/soil: particle [0-9]+ became unstable at step 1 \\(density .*\\); "
+                      "reduce the timestep \\(or the cfl value\\).*",
+                      command("run 10 post no"));
+}
+
 TEST_F(SoilPhysics, IntegratingAnotherAtomStyleIsAnError)
 {
   HIDE_OUTPUT([&] {
