@@ -252,7 +252,7 @@ void PairSPHSoil::init_style()
   models.clear();
   models.resize(atom->ntypes + 1);
   for (int t = 1; t <= atom->ntypes; t++)
-    if (type_set[t] && !materials[t].wall) 
+    if (type_set[t] && !materials[t].wall)
       models[t] = SPHSoil::make_constitutive_model(materials[t], drucker_prager_fit);
 
   // a half list: each pair once, shares to both particles (see eval())
@@ -314,7 +314,7 @@ void PairSPHSoil::compute(int eflag, int vflag)
    eight arrays; and the accumulators of the sums, set to zero
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION> void PairSPHSoil::pack_atoms()
+void PairSPHSoil::pack_atoms()
 {
   const int nall = atom->nlocal + atom->nghost;
   if (nall > nmax_packed) {
@@ -397,7 +397,7 @@ template <int DIMENSION> void PairSPHSoil::eval()
     return n * (beta_viscosity * n - alpha * c * d) / (d * d * rhobar);
   };
 
-  pack_atoms<DIMENSION>();    // (re)allocates the packed rows: take their addresses after it
+  pack_atoms();    // (re)allocates the packed rows: take their addresses after it
   const double *const in = packed;
   double *const out = sums;
   constexpr int DRHO = S_DRHO<DIMENSION>(), STRAIN = S_STRAIN_RATE<DIMENSION>(),
@@ -585,7 +585,5 @@ template <int DIMENSION> void PairSPHSoil::eval()
 
 template void PairSPHSoil::eval<2>();
 template void PairSPHSoil::eval<3>();
-template void PairSPHSoil::pack_atoms<2>();
-template void PairSPHSoil::pack_atoms<3>();
 template void PairSPHSoil::unpack_sums<2>();
 template void PairSPHSoil::unpack_sums<3>();

@@ -70,7 +70,7 @@ class PairSPHSoil : public Pair {
   int nmax_packed;
   double *packed;
   double *sums;
-  template <int DIMENSION> void pack_atoms();
+  void pack_atoms();
   template <int DIMENSION> void unpack_sums();
 
   void allocate();
