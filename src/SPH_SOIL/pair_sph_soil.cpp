@@ -585,5 +585,3 @@ template <int DIMENSION> void PairSPHSoil::eval()
 
 template void PairSPHSoil::eval<2>();
 template void PairSPHSoil::eval<3>();
-template void PairSPHSoil::unpack_sums<2>();
-template void PairSPHSoil::unpack_sums<3>();

@@ -159,14 +159,12 @@ void DruckerPrager::stress_rate(const double stress[6], const double strain_rate
   const double mean = i1 / 3.0;
   const double deviator[6] = {stress[0] - mean, stress[1] - mean, stress[2] - mean,
                               stress[3], stress[4], stress[5]};
-  const double j2 =
-      0.5 * (deviator[0] * deviator[0] + deviator[1] * deviator[1] + deviator[2] * deviator[2]) +
-      deviator[3] * deviator[3] + deviator[4] * deviator[4] + deviator[5] * deviator[5];
+  const double j2 = second_invariant(stress);
   // well inside the surface (the test below, made certain without the square root by
   // bounding its tolerance from above with sqrt(J2) <= radius): elastic
   const double radius = kc - alpha * i1;
   const double margin = radius - YIELD_TOLERANCE * (radius + alpha * std::fabs(i1) + kc);
-  if (margin > 0.0 && j2 < (1.0 - 1.0e-12) * margin * margin) return;
+  if (margin > 0.0 && j2 < (1.0 - SQUARED_MARGIN) * margin * margin) return;
   const double root_j2 = std::sqrt(j2);
   if (!(root_j2 > 0.0)) return;
   const double f = root_j2 + alpha * i1 - kc;
@@ -212,7 +210,7 @@ bool DruckerPrager::return_to_admissible(double stress[6]) const
   // most particles are well inside: no square root for them (the margin keeps the
   // decision identical to the exact test below)
   const double j2 = second_invariant(stress);
-  if (j2 <= (1.0 - 1.0e-12) * radius * radius) return changed;
+  if (j2 <= (1.0 - SQUARED_MARGIN) * radius * radius) return changed;
   const double mean = i1 / 3.0;
   const double root_j2 = std::sqrt(j2);
   if (root_j2 > radius) {
@@ -268,3 +266,4 @@ std::unique_ptr<ConstitutiveModel> SPHSoil::make_constitutive_model(const SoilMa
 
 // out-of-class definition: C++11/14 need it when the constant is bound to a reference
 constexpr double DruckerPrager::YIELD_TOLERANCE;
+constexpr double DruckerPrager::SQUARED_MARGIN;

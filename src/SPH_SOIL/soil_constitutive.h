@@ -133,6 +133,9 @@ class DruckerPrager final : public ConstitutiveModel {
   // relative distance to the yield surface below which a stress counts as on it,
   // in units of sqrt(J2) + alpha_phi |I1| + k_c (see soil_constitutive.cpp)
   static constexpr double YIELD_TOLERANCE = 1.0e-10;
+  // J2 below (1 - SQUARED_MARGIN) r^2 means sqrt(J2) < r whatever the rounding of the square
+  // root (0.5 ulp): the tests that decide "inside" skip the square root with no change of result
+  static constexpr double SQUARED_MARGIN = 1.0e-12;
 
   // the parameters must pass check(); throws std::invalid_argument otherwise
   explicit DruckerPrager(const DruckerPragerParameters &parameters);
