@@ -4,12 +4,16 @@
 #
 #   tools/build.sh [extra cmake arguments, e.g. -DLAMMPS_SOURCE_DIR=/path/to/lammps]
 #
-# Environment: BUILD_DIR (default: build), JOBS (default: number of cores),
-#   SPH_SOIL_CACHE_DIR (where the fetched LAMMPS source is kept, default ~/.cache/sph_soil),
-#   LAMMPS_SOURCE_DIR (use this LAMMPS tree instead of fetching one).
+# Environment:
+#   SPH_SOIL_LAMMPS     which of Debian's LAMMPS sources to build against: newest (default:
+#                       4Jul2026, else 4Feb2025), 4Jul2026, 4Feb2025 or 29Sep2021
+#   BUILD_DIR           default: build for the newest LAMMPS, build-<release> for another
+#   JOBS                default: number of cores
+#   SPH_SOIL_CACHE_DIR  where fetched LAMMPS sources are kept (default ~/.cache/sph_soil)
+#   LAMMPS_SOURCE_DIR   use this LAMMPS tree instead of fetching one
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${BUILD_DIR:-$root/build}
+source "$root/tools/build_dir.sh"
 jobs=${JOBS:-$(nproc)}
 
 bash "$root/tools/setup_deps.sh"
@@ -18,6 +22,7 @@ bash "$root/tools/setup_deps.sh"
 export CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=true
 
 args=("$@")
+[ -n "${SPH_SOIL_LAMMPS:-}" ] && args+=("-DSPH_SOIL_LAMMPS=$SPH_SOIL_LAMMPS")
 [ -n "${SPH_SOIL_CACHE_DIR:-}" ] && args+=("-DSPH_SOIL_CACHE_DIR=$SPH_SOIL_CACHE_DIR")
 [ -n "${LAMMPS_SOURCE_DIR:-}" ] && args+=("-DLAMMPS_SOURCE_DIR=$LAMMPS_SOURCE_DIR")
 if [ ! -f "$build/build.ninja" ] || [ ${#args[@]} -gt 0 ]; then

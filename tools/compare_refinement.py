@@ -40,7 +40,7 @@ import sph_analysis  # noqa: E402
 PROBLEMS = {
     'bars': dict(d=0.002, height=0.1, times=(0.06, 0.11, 0.6), title='Aluminium bars (Bui et al. 2008)',
                  experiment='examples/aluminium_bars/experiment/surface.csv'),
-    'collapse': dict(d=0.04, height=2.0, times=(0.25, 0.45, 1.8), title='Soil collapse (SPEC 6.2)',
+    'collapse': dict(d=0.04, height=2.0, times=(0.25, 0.45, 1.8), title='Soil collapse (doc/theory.rst 6.2)',
                      experiment=None),
 }
 RUNS = [('coarse', 'coarse'), ('fine', 'fine (static 0.5, 0.5)'),

@@ -7,8 +7,11 @@
 The example runs in a scratch directory (--workdir) as
     mpirun -np N lmp -in examples/NAME/in.NAME -var short 1 [extra -var settings]
 and the last thermo table of its log is compared with the one in the reference log
-examples/NAME/log.<tag>.NAME.short.<np> (the newest matching file). This is what LAMMPS's own
-regression tester does with its examples' log.* files.
+examples/NAME/log.<version>.NAME.short.<np>, where <version> is the LAMMPS release that wrote it
+(4Jul26, 29Sep21; as in LAMMPS's own examples): the one of the release under test, else the
+newest release's. This is what LAMMPS's own regression tester does with its examples' log.* files.
+Each supported release has its own references because the order of LAMMPS's neighbour lists and
+communication differs between releases, and with it the round-off of the pair sums.
 
 Tolerance (stated here and in doc/): for every column and row, |new - ref| <= rtol |ref| + atol
 with rtol = 1e-6 and atol = 1e-12 times the column's largest |ref|; columns whose reference
@@ -22,6 +25,7 @@ soil_collapse short run while every continuous column stays within 1e-6.
 import argparse
 import glob
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -57,6 +61,34 @@ def thermo_table(path):
     if not tables:
         raise SystemExit(f'regression: no thermo table in {path}')
     return tables[-1]
+
+
+MONTHS = 'Jan Feb Mar Apr May Jun Jul Aug Sep Oct Nov Dec'.split()
+
+
+def lammps_release(path):
+    """The release that wrote a log, from its first line 'LAMMPS (4 Jul 2026 ...)': '4Jul26'."""
+    with open(path) as f:
+        m = re.match(r'LAMMPS \((\d+) (\w+) (\d{4})', f.readline())
+    if not m:
+        raise SystemExit(f'regression: {path} does not start with a LAMMPS version line')
+    return f'{m.group(1)}{m.group(2)}{m.group(3)[2:]}'
+
+
+def release_key(release):
+    """Sort key of '4Jul26': (2026, 7, 4)."""
+    m = re.match(r'(\d+)([A-Za-z]{3})(\d{2})$', release)
+    return (2000 + int(m.group(3)), MONTHS.index(m.group(2)) + 1, int(m.group(1))) if m else (0, 0, 0)
+
+
+def reference_log(exdir, name, np, release):
+    """The reference log of this release, else the newest release's; None if there is none."""
+    refs = {}
+    for path in glob.glob(os.path.join(exdir, f'log.*.{name}.short.{np}')):
+        refs[os.path.basename(path).split('.')[1]] = path
+    if not refs:
+        return None
+    return refs.get(release) or refs[max(refs, key=release_key)]
 
 
 def compare(ref, new):
@@ -119,26 +151,25 @@ def main():
             sys.stdout.write(''.join(open(log).readlines()[-20:]))
         raise SystemExit(f'regression: {" ".join(cmd)} failed with exit code {run.returncode}')
     print(f'regression: {a.example} short run on {a.np} rank(s) took {time.time() - start:.1f} s')
-    new = thermo_table(os.path.join(work, 'log.short'))
+    log = os.path.join(work, 'log.short')
+    new = thermo_table(log)
+    release = lammps_release(log)
 
     if a.update:
-        stamp = time.strftime('%d%b%y')
-        for old in glob.glob(os.path.join(exdir, f'log.*.{name}.short.{a.np}')):
-            os.remove(old)
-        target = os.path.join(exdir, f'log.{stamp}.{name}.short.{a.np}')
-        shutil.copy(os.path.join(work, 'log.short'), target)
+        target = os.path.join(exdir, f'log.{release}.{name}.short.{a.np}')
+        shutil.copy(log, target)
         print(f'regression: reference written to {target}')
         return
-    refs = sorted(glob.glob(os.path.join(exdir, f'log.*.{name}.short.{a.np}')), key=os.path.getmtime)
-    if not refs:
+    ref = reference_log(exdir, name, a.np, release)
+    if not ref:
         raise SystemExit(f'regression: no reference log examples/{a.example}/log.*.{name}.short.{a.np}')
-    problems = compare(thermo_table(refs[-1]), new)
+    problems = compare(thermo_table(ref), new)
     if problems:
-        print(f'regression: {name} np {a.np} differs from {os.path.basename(refs[-1])}:')
+        print(f'regression: {name} np {a.np} (LAMMPS {release}) differs from {os.path.basename(ref)}:')
         for line in problems[:20]:
             print('  ' + line)
         raise SystemExit(1)
-    print(f'regression: {name} np {a.np} matches {os.path.basename(refs[-1])} '
+    print(f'regression: {name} np {a.np} (LAMMPS {release}) matches {os.path.basename(ref)} '
           f'({len(new[1])} rows x {len(new[0])} columns, rtol {RTOL})')
 
 

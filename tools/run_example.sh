@@ -7,7 +7,7 @@
 #       default example: aluminium_bars (Bui 2008's experiment, 2 mm spacing, ~3 min on 2 cores)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${BUILD_DIR:-$root/build}
+source "$root/tools/build_dir.sh"
 example=${1:-aluminium_bars}
 shift || true
 dir=$root/examples/$example

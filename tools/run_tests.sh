@@ -3,7 +3,7 @@
 # This is the README's test command and what CI (.ci/run) runs.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-build=${BUILD_DIR:-$root/build}
+source "$root/tools/build_dir.sh"
 
 bash "$root/tools/build.sh"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

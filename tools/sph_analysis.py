@@ -55,7 +55,7 @@ def failure_line(x0, y0, moved, spacing, height):
 
 
 def kernel_2d(r, h):
-    """Cubic spline W(r, h) in 2D (SPEC section 1)."""
+    """Cubic spline W(r, h) in 2D (doc/theory.rst section 1)."""
     q = r / h
     w = np.where(q < 1.0, 1.0 - 1.5 * q * q + 0.75 * q ** 3,
                  np.where(q < 2.0, 0.25 * (2.0 - q) ** 3, 0.0))

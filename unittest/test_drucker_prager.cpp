@@ -1,4 +1,4 @@
-// Drucker-Prager soil model (SPEC section 3): Hooke's law inside the surface, objectivity of the
+// Drucker-Prager soil model (doc/theory.rst section 3): Hooke's law inside the surface, objectivity of the
 // Jaumann terms, the flow rule and consistency on the surface, Bui's return mapping, simple shear.
 #include "soil_constitutive.h"
 #include "soil_material.h"
@@ -291,9 +291,9 @@ TEST(DruckerPrager, ElasticStepIsHookesLaw)
   }
 }
 
-// On the surface the rate is the SPEC's elastic-plastic rate: when loading, the plastic part is
+// On the surface the rate is the elastic-plastic rate of doc/theory.rst 3.6: when loading, the plastic part is
 // lambdadot (9 K sin(psi) delta + G s/sqrt(J2)) (flow rule of g) and the total rate is tangent to
-// f (consistency, which holds for every psi with the SPEC's lambdadot); when unloading it is
+// f (consistency, which holds for every psi with the plastic multiplier of 3.5); when unloading it is
 // the elastic rate. Jaumann terms included (they are tangent to f by themselves).
 TEST(DruckerPrager, RateOnTheSurfaceFollowsTheFlowRuleAndStaysTangent)
 {

@@ -1,4 +1,4 @@
-// Kernel gradient error of one split and the instability conditions (SPEC.md section 5).
+// Kernel gradient error of one split and the instability conditions (doc/theory.rst section 5).
 #include "soil_refine_error.h"
 
 #include "gtest/gtest.h"

@@ -70,15 +70,18 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   atom->rho_flag = 1;
   atom->vest_flag = 1;
 
-  register_field(H_NAME, &smoothing_length, Atom::DOUBLE, 0);
-  register_field(STRESS_NAME, &stress, Atom::DOUBLE, NVOIGT);
-  register_field(STRESS_RATE_NAME, &stress_rate, Atom::DOUBLE, NVOIGT);
-  register_field(STRAIN_NAME, &total_strain, Atom::DOUBLE, NVOIGT);
-  register_field(STRAIN_RATE_NAME, &strain_rate, Atom::DOUBLE, NVOIGT);
-  register_field(SPIN_NAME, &spin, Atom::DOUBLE, NSPIN);
-  register_field(LEVEL_NAME, &level, Atom::INT, 0);
-  register_field(WALL_NORMAL_NAME, &wall_normal, Atom::DOUBLE, 3);
-  register_field(WALL_DISTANCE_NAME, &wall_distance, Atom::DOUBLE, 0);
+  // read_restart and a second atom_style command re-create the AtomVec: an entry of the
+  // previous instance then follows the new arrays
+  using SphSoilCompat::set_peratom;
+  set_peratom(atom, H_NAME, &smoothing_length, Atom::DOUBLE, 0);
+  set_peratom(atom, STRESS_NAME, &stress, Atom::DOUBLE, NVOIGT);
+  set_peratom(atom, STRESS_RATE_NAME, &stress_rate, Atom::DOUBLE, NVOIGT);
+  set_peratom(atom, STRAIN_NAME, &total_strain, Atom::DOUBLE, NVOIGT);
+  set_peratom(atom, STRAIN_RATE_NAME, &strain_rate, Atom::DOUBLE, NVOIGT);
+  set_peratom(atom, SPIN_NAME, &spin, Atom::DOUBLE, NSPIN);
+  set_peratom(atom, LEVEL_NAME, &level, Atom::INT, 0);
+  set_peratom(atom, WALL_NORMAL_NAME, &wall_normal, Atom::DOUBLE, 3);
+  set_peratom(atom, WALL_DISTANCE_NAME, &wall_distance, Atom::DOUBLE, 0);
 
   // Which fields travel where (why):
   //  comm (every step):  rho, stress, vest   - the pair sum needs them from ghosts
@@ -117,25 +120,6 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   assign_fields(fields_data_vel, {"id", "v", STRESS_NAME}, field_storage[11]);
 
   setup_fields();
-}
-
-/* ----------------------------------------------------------------------
-   Add our array to Atom's per-atom table, or re-point an existing entry:
-   read_restart and a second atom_style command re-create the AtomVec, and
-   the table entry of the previous instance must then follow the new arrays.
-------------------------------------------------------------------------- */
-
-void AtomVecSPHSoil::register_field(const char *name, void *address, int datatype, int cols)
-{
-  for (int i = 0; i < atom->nperatom; i++) {
-    if (strcmp(atom->peratom[i].name, name) == 0) {
-      atom->peratom[i].address = address;
-      atom->peratom[i].datatype = datatype;
-      atom->peratom[i].cols = cols;
-      return;
-    }
-  }
-  atom->add_peratom(name, address, datatype, cols);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -190,17 +174,17 @@ void AtomVecSPHSoil::data_atom_post(int ilocal)
 {
   const tagint id = atom->tag[ilocal];
   if (!(rmass[ilocal] > 0.0))
-    error->one(FLERR, "Invalid mass {} of atom {} in Atoms section of data file: must be > 0",
+    SphSoilCompat::error_one(lmp, FLERR, "Invalid mass {} of atom {} in Atoms section of data file: must be > 0",
                rmass[ilocal], id);
   if (!(smoothing_length[ilocal] >= 0.0) || !std::isfinite(smoothing_length[ilocal]))
-    error->one(FLERR,
+    SphSoilCompat::error_one(lmp, FLERR,
                "Invalid smoothing length h {} of atom {} in Atoms section of data file: must be >= 0",
                smoothing_length[ilocal], id);
   if (!(rho[ilocal] > 0.0) || !std::isfinite(rho[ilocal]))
-    error->one(FLERR, "Invalid density {} of atom {} in Atoms section of data file: must be > 0",
+    SphSoilCompat::error_one(lmp, FLERR, "Invalid density {} of atom {} in Atoms section of data file: must be > 0",
                rho[ilocal], id);
   if (level[ilocal] < 0)
-    error->one(FLERR,
+    SphSoilCompat::error_one(lmp, FLERR,
                "Invalid refinement level {} of atom {} in Atoms section of data file: must be >= 0",
                level[ilocal], id);
   drho[ilocal] = 0.0;
@@ -215,10 +199,11 @@ void AtomVecSPHSoil::data_atom_post(int ilocal)
    index of a named per-atom property for compute property/atom, or -1
 ------------------------------------------------------------------------- */
 
-int AtomVecSPHSoil::property_atom(char *name)
+int AtomVecSPHSoil::property_atom(SphSoilCompat::PropertyAtomName name)
 {
+  const std::string wanted(name);
   for (int i = 0; i < NPROPERTIES; i++)
-    if (strcmp(name, properties[i].name) == 0) return i;
+    if (wanted == properties[i].name) return i;
   return -1;
 }
 

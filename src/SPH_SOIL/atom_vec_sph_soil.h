@@ -15,6 +15,7 @@ AtomStyle(sph/soil,AtomVecSPHSoil);
 #define LMP_ATOM_VEC_SPH_SOIL_H
 
 #include "atom_vec.h"
+#include "sph_soil_compat.h"
 
 #include <string>
 
@@ -29,7 +30,7 @@ class AtomVecSPHSoil : public AtomVec {
   void force_clear(int, size_t) override;
   void create_atom_post(int) override;
   void data_atom_post(int) override;
-  int property_atom(char *) override;
+  int property_atom(SphSoilCompat::PropertyAtomName) override;
   void pack_property_atom(int, double *, int, int) override;
 
   // Per-atom arrays owned by this style (registered with Atom::add_peratom).
@@ -52,7 +53,6 @@ class AtomVecSPHSoil : public AtomVec {
   static constexpr int NSPIN = 3;
 
  private:
-  void register_field(const char *name, void *address, int datatype, int cols);
   std::string field_storage[12];
 };
 

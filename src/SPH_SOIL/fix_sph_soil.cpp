@@ -33,6 +33,7 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
     yielded_count(0), step_rates(nullptr), saved_rates(nullptr), allocated_rows(0), restore_pending(false)
 {
   time_integrate = 1;
+  restart_global = 1;
   restart_peratom = 1;
   vector_flag = 1;
   size_vector = 3;
@@ -131,7 +132,7 @@ void FixSPHSoil::setup(int /*vflag*/)
                                                 avec->stress_rate[i]);
   if (cfl == 0.0) {
     // measured: a geostatic column with the paper's viscosity (alpha = 0.1) stays at rest
-    // up to 0.195 h/c_p; the SPEC's C_cfl range is 0.1 to 0.2
+    // up to 0.195 h/c_p; the usual C_cfl range is 0.1 to 0.2 (doc/theory.rst section 4)
     const double limit = stable_timestep();
     if (update->dt > limit)
       error->all(FLERR, "Fix sph/soil: timestep {:.6g} exceeds the stability limit {:.6g} = "
@@ -157,6 +158,7 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
     restore_pending = false;
   }
 
+  int first_unstable = -1;
   for (int i = 0; i < nlocal; i++) {
     if (!integrated(i)) continue;
     // velocity Verlet for x, v; vest estimates v(t + dt) for the rates
@@ -178,7 +180,9 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
       avec->stress[i][k] += dtv * avec->stress_rate[i][k];
     }
     model_of_type[atom->type[i]]->return_to_admissible(avec->stress[i]);
+    if (first_unstable < 0 && unstable(i)) first_unstable = i;
   }
+  stop_if_unstable(first_unstable);
 }
 
 /* ----------------------------------------------------------------------
@@ -191,6 +195,7 @@ void FixSPHSoil::final_integrate()
   double *rho = atom->rho, *drho = atom->drho, *rmass = atom->rmass;
   const int nlocal = atom->nlocal;
   bigint yielded = 0;
+  int first_unstable = -1;
 
   for (int i = 0; i < nlocal; i++) {
     if (!integrated(i)) continue;
@@ -211,27 +216,49 @@ void FixSPHSoil::final_integrate()
       stress_rate[k] = new_rate[k];
     }
     if (model->return_to_admissible(stress)) yielded++;
-    check_state(i);
+    if (first_unstable < 0 && unstable(i)) first_unstable = i;
   }
   yielded_count = yielded;
+  stop_if_unstable(first_unstable);
 }
 
 /* ----------------------------------------------------------------------
-   stop a run that goes unstable, naming the particle and the step
+   a run that goes unstable stops, naming the particle and the step
 ------------------------------------------------------------------------- */
 
-void FixSPHSoil::check_state(int i)
+bool FixSPHSoil::unstable(int i) const
 {
   // one test for all: a NaN or an infinity anywhere makes the sum non-finite
   double sum = atom->rho[i];
   for (int a = 0; a < 3; a++) sum += atom->v[i][a] + atom->x[i][a];
   for (int k = 0; k < 6; k++) sum += avec->stress[i][k];
-  if (std::isfinite(sum) && atom->rho[i] > 0.0) return;
-  error->one(FLERR,
+  return !(std::isfinite(sum) && atom->rho[i] > 0.0);
+}
+
+// Collective: every rank learns the lowest ID of an unstable particle, so that the error is
+// raised on all ranks and reaches the screen and the log (an error on one rank would reach
+// only that rank's screen). Called right after the positions move, so that it comes before
+// LAMMPS's own checks of the coordinates in the neighbour-list decision.
+void FixSPHSoil::stop_if_unstable(int first_unstable)
+{
+  struct {
+    double id;
+    int rank;
+  } mine = {first_unstable >= 0 ? (double) atom->tag[first_unstable] : BIG, comm->me}, lowest;
+  MPI_Allreduce(&mine, &lowest, 1, MPI_DOUBLE_INT, MPI_MINLOC, world);
+  if (lowest.id >= BIG) return;
+  double state[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+  if (lowest.rank == comm->me) {
+    const int i = first_unstable;
+    state[0] = atom->rho[i];
+    for (int a = 0; a < 3; a++) state[1 + a] = atom->v[i][a];
+    state[4] = avec->stress[i][0];
+  }
+  MPI_Bcast(state, 5, MPI_DOUBLE, lowest.rank, world);
+  error->all(FLERR,
              "Fix sph/soil: particle {} became unstable at step {} (density {}, velocity {} {} "
              "{}, stress xx {}); reduce the timestep (or the cfl value)",
-             atom->tag[i], update->ntimestep, atom->rho[i], atom->v[i][0], atom->v[i][1],
-             atom->v[i][2], avec->stress[i][0]);
+             (tagint) lowest.id, update->ntimestep, state[0], state[1], state[2], state[3], state[4]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -360,6 +387,31 @@ int FixSPHSoil::unpack_exchange(int nlocal, double *buf)
 /* ----------------------------------------------------------------------
    restart files: the current rates (between runs they are those of the last step)
 ------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   the elapsed time: restart files of LAMMPS before 2022 do not keep it, and a time-based
+   output or stop condition would restart from zero; stored here for every version
+------------------------------------------------------------------------- */
+
+void FixSPHSoil::write_restart(FILE *fp)
+{
+  double list[2] = {update->atime + (update->ntimestep - update->atimestep) * update->dt,
+                    (double) update->ntimestep};
+  if (comm->me == 0) {
+    int size = sizeof(list);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), 2, fp);
+  }
+}
+
+void FixSPHSoil::restart(char *buf)
+{
+  const auto *list = reinterpret_cast<const double *>(buf);
+  // a reset_timestep since the restart file was read starts the clock anew
+  if ((bigint) list[1] != update->ntimestep) return;
+  update->atime = list[0];
+  update->atimestep = update->ntimestep;
+}
 
 int FixSPHSoil::pack_restart(int i, double *buf)
 {

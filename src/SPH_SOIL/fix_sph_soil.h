@@ -1,12 +1,12 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPH_SOIL package for LAMMPS: fix sph/soil
 
-   Time integration of the soil state (positions, velocities, density,
-   stress, accumulated strain) with the kick-drift-kick scheme of fix sph,
-   and the constitutive update (Drucker-Prager by default) after each
-   stress half step, followed by the return to the admissible set.
-   Optional adaptive time step from the CFL condition. Wall particles are
-   never integrated. See doc/fix_sph_soil.rst.
+   Time integration of the soil state: velocity Verlet for positions and
+   velocities, a Heun predictor-corrector for density, accumulated strain
+   and stress (doc/theory.rst section 4.1), each stress update followed by
+   the constitutive model's return to the admissible set. Optional adaptive
+   time step from the CFL condition. Wall particles are never integrated.
+   See doc/fix_sph_soil.rst.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -52,6 +52,8 @@ class FixSPHSoil : public Fix {
   void copy_arrays(int, int, int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
   int pack_restart(int, double *) override;
   void unpack_restart(int, int) override;
   int maxsize_restart() override;
@@ -87,8 +89,8 @@ class FixSPHSoil : public Fix {
     const int type = atom->type[i];
     return (atom->mask[i] & groupbit) && type < (int) model_of_type.size() && model_of_type[type];
   }
-  void update_stress(int i);
-  void check_state(int i);
+  bool unstable(int i) const;
+  void stop_if_unstable(int first_unstable);
   double stable_timestep();
   void adapt_timestep();
 };

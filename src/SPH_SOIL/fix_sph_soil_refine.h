@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPH_SOIL package for LAMMPS: fix sph/soil/refine
 
-   Dynamic particle refinement (SPEC.md section 5): every N steps, each
+   Dynamic particle refinement (doc/theory.rst section 5): every N steps, each
    particle of the group whose accumulated strain measure
    eps_xx^2 + eps_yy^2 + eps_zz^2 exceeds a threshold, and whose level is
    below maxlevel, is split into 4 (2D) or 8 (3D) daughters.

@@ -371,7 +371,7 @@ template <int DIMENSION> void PairSPHSoil::unpack_sums()
 }
 
 /* ----------------------------------------------------------------------
-   the SPH sums of SPEC section 2 over a half neighbour list: every pair once,
+   the SPH sums of doc/theory.rst section 2 over a half neighbour list: every pair once,
    its contributions to both particles (Newton's third law: momentum is
    conserved exactly); ghosts' shares return to their owners by reverse
    communication (the atom style carries drho, strain rate and spin back)

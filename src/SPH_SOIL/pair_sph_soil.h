@@ -4,7 +4,7 @@
    One loop over a half neighbour list computes, for every soil particle,
    the density rate (continuity), the acceleration (momentum with Monaghan
    artificial viscosity) and the velocity gradient split into strain rate
-   and spin (Bui et al. 2008; SPEC.md section 2). Wall particles are
+   and spin (Bui et al. 2008; doc/theory.rst section 2). Wall particles are
    Morris-type ghosts with Bui's no-slip (or free-slip) treatment.
    The stress update lives in fix sph/soil. See doc/pair_sph_soil.rst.
 ------------------------------------------------------------------------- */

@@ -1,6 +1,6 @@
 /* ----------------------------------------------------------------------
    SPH_SOIL package: constitutive models of the soil (pure, no LAMMPS).
-   Drucker-Prager as in SPEC.md section 3 (Bui et al. 2008).
+   Drucker-Prager as in doc/theory.rst section 3 (Bui et al. 2008).
 ------------------------------------------------------------------------- */
 
 #include "soil_constitutive.h"

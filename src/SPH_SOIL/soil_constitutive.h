@@ -100,10 +100,10 @@ class ConstitutiveModel {
 
 /* ----------------------------------------------------------------------
    Drucker-Prager, non-associated, perfectly plastic, plane-strain fit to
-   Mohr-Coulomb (Bui et al. 2008; SPEC.md section 3):
+   Mohr-Coulomb (Bui et al. 2008; doc/theory.rst section 3):
      f = sqrt(J2) + alpha_phi I1 - k_c,   g = sqrt(J2) + 3 I1 sin(psi)
    with one of two plane-strain fits (DruckerPragerFit):
-     associated (SPEC, Bui 2008; exact for associated flow, psi = phi):
+     associated (Bui 2008; exact for associated flow, psi = phi):
        alpha_phi = tan(phi)/sqrt(9 + 12 tan^2 phi),  k_c = 3c/sqrt(9 + 12 tan^2 phi)
      nonassociated (exact for psi = 0: no plastic volume change, so s_zz = 0
      on the surface and sqrt(J2) is the in-plane maximum shear stress):

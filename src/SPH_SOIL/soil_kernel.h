@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPH_SOIL package: the cubic spline kernel (Monaghan & Lattanzio 1985).
 
-   Pure functions, no LAMMPS dependency (SPEC section 1):
+   Pure functions, no LAMMPS dependency (doc/theory.rst section 1):
      W(r,h) = C/h^D * (1 - 1.5 q^2 + 0.75 q^3)   for 0 <= q < 1
             = C/h^D * 0.25 (2 - q)^3              for 1 <= q < 2
             = 0                                   otherwise,      q = r/h

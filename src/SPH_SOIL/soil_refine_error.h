@@ -2,7 +2,7 @@
    SPH_SOIL package: choosing refinement parameters (pure, no LAMMPS).
 
    The kernel gradient error of one split and the instability conditions of
-   SPEC.md section 5 (the paper's Fig. 1). A parent p at the origin is
+   doc/theory.rst sections 5.5 and 5.6 (the paper's Fig. 1). A parent p at the origin is
    replaced by M = 2^D daughters at the corners of a square (cube) of side
    eps_r * d_p with smoothing length alpha_r * h_p and mass m_p / M:
 

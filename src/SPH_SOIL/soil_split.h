@@ -1,6 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPH_SOIL package: the geometry of one particle split and the CSPM
-   interpolation of the daughters' state (pure, no LAMMPS). SPEC.md section 5.
+   interpolation of the daughters' state (pure, no LAMMPS). doc/theory.rst section 5.3.
 
    A parent of spacing d_p is replaced by M = 2^D daughters at the corners of
    an axis-aligned square (cube) of side separation * d_p centred on it, with

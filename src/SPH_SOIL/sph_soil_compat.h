@@ -1,45 +1,80 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPH_SOIL package for LAMMPS: compatibility layer.
 
-   Every LAMMPS call whose form changed between releases is made through
-   this header, so that supporting another LAMMPS version means editing
-   this file only. LAMMPS does not define a numeric version itself; the
-   SPH_SOIL CMake build passes LAMMPS_VERSION_NUMBER=yyyymmdd derived from
-   src/version.h. A plain drop-in build (make or cmake of LAMMPS itself)
-   gets the default below, the version this package is developed against.
+   Every LAMMPS call of the package and of its tests whose form changed
+   between LAMMPS 29Sep2021 and today is made through this header. The form
+   is chosen at compile time from LAMMPS's own classes (which members exist,
+   which signatures they have), never from a version number or a date: the
+   header compiles unchanged in the CMake superbuild and in LAMMPS's
+   traditional make, with no define set, and on a release in between it
+   takes, call by call, whichever form that release has.
 
-   Supported: 29Sep2021 (update 2, Debian's 20220106), the "old" API.
-   The branches for >= 23Jun2022 (add_request(), forward_comm(this),
-   std::vector field lists) follow the newer API but are not yet tested.
+   How: a helper has a "newer" overload, whose return type is the decltype
+   of the newer call, so that it exists only where that call is well-formed
+   (SFINAE), and an "older" one; the newer takes Newer, a better match than
+   the older's Older. Both are templates on the LAMMPS class, so only the
+   chosen body is ever compiled.
+
+   What changed (and what is detected):
+   - AtomVec field lists: space-separated `char *` -> std::vector<std::string>
+     (the member's type picks an assign_fields() overload)
+   - AtomVec::property_atom(char *) -> property_atom(const std::string &)
+     (PropertyAtomName: the parameter type of the base class's function)
+   - Atom::peratom: array + nperatom, `char *` names -> std::vector, std::string
+     (whether Atom has nperatom)
+   - neighbour list requests: Neighbor::request() and public NeighRequest
+     fields -> Neighbor::add_request(client, NeighConst::REQ_* flags), lists
+     found by find_list() (whether add_request(client, flags) compiles)
+   - Neighbor::build_one(list, preflag) -> build_one(list), where build()
+     marks occasional lists stale itself (whether the two-argument form compiles)
+   - Domain::find_region() index -> Domain::get_region_by_id()
+   - Error::one() with exceptions on: 29Sep2021 writes the message but does
+     not flush screen and log before main() calls MPI_Abort, so a batch run
+     lost it; error_one() flushes on every release (no detection needed)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SPH_SOIL_COMPAT_H
 #define LMP_SPH_SOIL_COMPAT_H
 
-#ifndef LAMMPS_VERSION_NUMBER
-#define LAMMPS_VERSION_NUMBER 20210929
-#endif
-
-#define SPH_SOIL_NEW_LAMMPS_API (LAMMPS_VERSION_NUMBER >= 20220623)
-
-#include "comm.h"
+#include "atom.h"
+#include "atom_vec.h"
 #include "command.h"
 #include "domain.h"
-#include "region.h"
+#include "error.h"
+#include "lammps.h"
 #include "neigh_list.h"
-#include <string>
-#include <vector>
-#include "neighbor.h"
-#if !SPH_SOIL_NEW_LAMMPS_API
 #include "neigh_request.h"
-#endif
+#include "neighbor.h"
+#include "region.h"
+
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace LAMMPS_NS {
+
+// Releases before add_request() have no NeighConst::REQ_* flags. Qualified lookup of
+// NeighConst::REQ_FULL finds LAMMPS's own enumerator where it exists (a direct member wins) and
+// falls back to this namespace, nominated below, only where it does not; there the flags go
+// only to the older request path below, which reads them bit by bit.
+namespace NeighConst {
+  namespace SphSoilNoRequestFlags {
+    enum { REQ_FULL = 1 << 0, REQ_OCCASIONAL = 1 << 1 };
+  }
+  using namespace SphSoilNoRequestFlags;
+}    // namespace NeighConst
+
 namespace SphSoilCompat {
 
-// Field lists of an AtomVec are `char *` (space separated) in old LAMMPS and
-// std::vector<std::string> in new; overloads pick the right form from the member's type.
-// `storage` must live as long as the AtomVec (old LAMMPS keeps the pointer).
+struct Older {};
+struct Newer : Older {};
+
+/* ---------------------------------------------------------------------- */
+// AtomVec
+
+// Field lists of an AtomVec: overloads pick the form from the member's type.
+// `storage` must live as long as the AtomVec (the older form keeps the pointer).
 inline void assign_fields(char *&dest, const std::vector<std::string> &names, std::string &storage)
 {
   storage.clear();
@@ -53,118 +88,197 @@ inline void assign_fields(std::vector<std::string> &dest, const std::vector<std:
   dest = names;
 }
 
-// Request a full, persistent-free neighbour list for a pair style or a fix.
-template <class Client> inline void request_full_neighbor_list(Neighbor *neighbor, Client *client,
-                                                                 bool is_fix, int instance = 0)
-{
-#if SPH_SOIL_NEW_LAMMPS_API
-  (void) instance;
-  neighbor->add_request(client, NeighConst::REQ_FULL);
-  (void) is_fix;
-#else
-  int irequest = neighbor->request(client, instance);
-  neighbor->requests[irequest]->half = 0;
-  neighbor->requests[irequest]->full = 1;
-  if (is_fix) {
-    neighbor->requests[irequest]->pair = 0;
-    neighbor->requests[irequest]->fix = 1;
+// The parameter type of AtomVec::property_atom(): an AtomVec declares its override with it.
+template <class F> struct FirstParameter;
+template <class C, class R, class A> struct FirstParameter<R (C::*)(A)> {
+  using type = A;
+};
+template <class C, class R, class A> struct FirstParameter<R (C::*)(A) const> {
+  using type = A;
+};
+using PropertyAtomName = FirstParameter<decltype(&AtomVec::property_atom)>::type;
+
+// Point the per-atom table entry `name` at new storage, or add it if there is none.
+namespace detail {
+  template <class AtomT> auto peratom_count(AtomT *atom, Newer) -> decltype((int) atom->peratom.size())
+  {
+    return (int) atom->peratom.size();
   }
-#endif
-}
+  template <class AtomT> auto peratom_count(AtomT *atom, Older) -> decltype((int) atom->nperatom)
+  {
+    return atom->nperatom;
+  }
+}    // namespace detail
 
-// Request the default (half) neighbour list for a pair style.
-template <class Client> inline void request_half_neighbor_list(Neighbor *neighbor, Client *client,
-                                                                 int instance = 0)
+template <class AtomT>
+void set_peratom(AtomT *atom, const std::string &name, void *address, int datatype, int cols)
 {
-#if SPH_SOIL_NEW_LAMMPS_API
-  (void) instance;
-  neighbor->add_request(client);
-#else
-  neighbor->request(client, instance);
-#endif
+  const int n = detail::peratom_count(atom, Newer());
+  for (int i = 0; i < n; i++) {
+    auto &entry = atom->peratom[i];
+    if (name == entry.name) {
+      entry.address = address;
+      entry.datatype = datatype;
+      entry.cols = cols;
+      return;
+    }
+  }
+  atom->add_peratom(name.c_str(), address, datatype, cols);
 }
 
-// Request an occasional full neighbour list for a fix or command (built on demand).
-template <class Client> inline void request_occasional_full_list(Neighbor *neighbor, Client *client)
+/* ---------------------------------------------------------------------- */
+// Neighbour lists
+
+// The older request path needs the client's kind (the newer add_request() overloads dispatch on it).
+inline bool client_is_fix(const class Pair *) { return false; }
+inline bool client_is_fix(const class Fix *) { return true; }
+
+namespace detail {
+  template <class N, class Client>
+  auto request(N *neighbor, Client *client, int flags, int /*instance*/, Newer)
+      -> decltype((void) neighbor->add_request(client, flags))
+  {
+    neighbor->add_request(client, flags);
+  }
+  // the older form: the flags' meaning set field by field
+  template <class N, class Client>
+  void request(N *neighbor, Client *client, int flags, int instance, Older)
+  {
+    const int irequest = neighbor->request(client, instance);
+    auto *request = neighbor->requests[irequest];
+    if (flags & NeighConst::REQ_FULL) {
+      request->half = 0;
+      request->full = 1;
+    }
+    if (client_is_fix(client)) {
+      request->pair = 0;
+      request->fix = 1;
+    }
+    if (flags & NeighConst::REQ_OCCASIONAL) request->occasional = 1;
+  }
+}    // namespace detail
+
+// The default (half) neighbour list for a pair style (instance: its index under pair hybrid,
+// which only the older request() takes).
+template <class Client>
+void request_half_neighbor_list(Neighbor *neighbor, Client *client, int instance = 0)
 {
-#if SPH_SOIL_NEW_LAMMPS_API
-  neighbor->add_request(client, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
-#else
-  int irequest = neighbor->request(client);
-  neighbor->requests[irequest]->pair = 0;
-  neighbor->requests[irequest]->fix = 1;
-  neighbor->requests[irequest]->half = 0;
-  neighbor->requests[irequest]->full = 1;
-  neighbor->requests[irequest]->occasional = 1;
-#endif
+  detail::request(neighbor, client, 0, instance, Newer());
 }
 
-// A command's occasional full list: request before lmp->init(), find after it.
-// Returns a handle for command_neighbor_list().
+// An occasional full list for a fix (built on demand with build_occasional_list()).
+template <class Client> void request_occasional_full_list(Neighbor *neighbor, Client *client)
+{
+  detail::request(neighbor, client, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL, 0, Newer());
+}
+
+// A command's occasional full list: request before lmp->init(), find after it with
+// command_neighbor_list(handle).
+namespace detail {
+  template <class N>
+  auto request_command(N *neighbor, Command *command, const char *style, Newer)
+      -> decltype((void) neighbor->add_request(command, style, 0), 0)
+  {
+    neighbor->add_request(command, style, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+    return 0;
+  }
+  template <class N> int request_command(N *neighbor, Command *command, const char *style, Older)
+  {
+    const int irequest = neighbor->request(command);
+    auto *request = neighbor->requests[irequest];
+    request->pair = 0;
+    request->command = 1;
+    request->half = 0;
+    request->full = 1;
+    request->occasional = 1;
+    request->command_style = style;
+    return irequest;
+  }
+  template <class N>
+  auto command_list(N *neighbor, Command *command, int /*handle*/, Newer)
+      -> decltype(neighbor->find_list(command))
+  {
+    return neighbor->find_list(command);
+  }
+  template <class N> NeighList *command_list(N *neighbor, Command * /*command*/, int handle, Older)
+  {
+    return neighbor->lists[handle];
+  }
+}    // namespace detail
+
 inline int request_command_full_list(Neighbor *neighbor, Command *command, const char *style)
 {
-#if SPH_SOIL_NEW_LAMMPS_API
-  neighbor->add_request(command, style, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
-  return 0;
-#else
-  int irequest = neighbor->request(command);
-  neighbor->requests[irequest]->pair = 0;
-  neighbor->requests[irequest]->command = 1;
-  neighbor->requests[irequest]->half = 0;
-  neighbor->requests[irequest]->full = 1;
-  neighbor->requests[irequest]->occasional = 1;
-  neighbor->requests[irequest]->command_style = style;
-  return irequest;
-#endif
+  return detail::request_command(neighbor, command, style, Newer());
 }
 
 inline NeighList *command_neighbor_list(Neighbor *neighbor, Command *command, int handle)
 {
-#if SPH_SOIL_NEW_LAMMPS_API
-  (void) handle;
-  return neighbor->find_list(command);
-#else
-  (void) command;
-  return neighbor->lists[handle];
-#endif
+  return detail::command_list(neighbor, command, handle, Newer());
 }
 
-// A region by its ID, nullptr if there is none (the index-based lookup was replaced in 2022).
+// Build an occasional list now, even if it was built earlier in this step (a second command
+// at the same step must not get the first one's stale list). The older build_one() needs
+// preflag = 1 for that; the newer one has no flag because Neighbor::build() marks occasional
+// lists stale, and callers call build() first.
+namespace detail {
+  template <class N>
+  auto build_occasional(N *neighbor, NeighList *list, Newer)
+      -> decltype(neighbor->build_one(list, 1))
+  {
+    return neighbor->build_one(list, 1);
+  }
+  template <class N> void build_occasional(N *neighbor, NeighList *list, Older)
+  {
+    neighbor->build_one(list);
+  }
+}    // namespace detail
+
+inline void build_occasional_list(Neighbor *neighbor, NeighList *list)
+{
+  detail::build_occasional(neighbor, list, Newer());
+}
+
+/* ---------------------------------------------------------------------- */
+// Regions
+
+namespace detail {
+  template <class D>
+  auto find_region(D *domain, const std::string &id, Newer) -> decltype(domain->get_region_by_id(id))
+  {
+    return domain->get_region_by_id(id);
+  }
+  template <class D> Region *find_region(D *domain, const std::string &id, Older)
+  {
+    const int index = domain->find_region(id);
+    return index < 0 ? nullptr : domain->regions[index];
+  }
+}    // namespace detail
+
+// A region by its ID, nullptr if there is none.
 inline Region *find_region(Domain *domain, const std::string &id)
 {
-#if LAMMPS_VERSION_NUMBER >= 20220915
-  return domain->get_region_by_id(id);
-#else
-  const int index = domain->find_region(id);
-  return index < 0 ? nullptr : domain->regions[index];
-#endif
+  return detail::find_region(domain, id, Newer());
 }
 
-inline void forward_comm(Comm *comm, class Pair *pair)
-{
-#if SPH_SOIL_NEW_LAMMPS_API
-  comm->forward_comm(pair);
-#else
-  comm->forward_comm_pair(pair);
-#endif
-}
+/* ---------------------------------------------------------------------- */
+// Errors
 
-inline void forward_comm(Comm *comm, class Fix *fix, int size = 0)
+// error->one(), but the message surely reaches this rank's screen and log in a batch run:
+// with exceptions on, LAMMPS 29Sep2021 writes it and throws without flushing, and its main()
+// then calls MPI_Abort, which discards unflushed output.
+template <typename... Args>
+[[noreturn]] void error_one(LAMMPS *lmp, const std::string &file, int line,
+                            const std::string &format, Args &&...args)
 {
-#if SPH_SOIL_NEW_LAMMPS_API
-  comm->forward_comm(fix, size);
-#else
-  comm->forward_comm_fix(fix, size);
-#endif
-}
-
-inline void reverse_comm(Comm *comm, class Fix *fix, int size = 0)
-{
-#if SPH_SOIL_NEW_LAMMPS_API
-  comm->reverse_comm(fix, size);
-#else
-  comm->reverse_comm_fix(fix, size);
-#endif
+  try {
+    lmp->error->one(file, line, format, std::forward<Args>(args)...);
+  } catch (...) {
+    if (lmp->screen) fflush(lmp->screen);
+    if (lmp->logfile) fflush(lmp->logfile);
+    throw;
+  }
+  // without exceptions Error::one() aborts itself; this is never reached
+  throw;
 }
 
 }    // namespace SphSoilCompat

@@ -91,9 +91,9 @@ void SPHSoilRefine::command(int narg, char **arg)
   if (domain->triclinic) domain->lamda2x(atom->nlocal + atom->nghost);
   neighbor->build(1);
   NeighList *list = SphSoilCompat::command_neighbor_list(neighbor, this, handle);
-  // preflag 1: rebuild even if an occasional list was built at this step before (a second
+  // rebuilt even if an occasional list was built at this step before (a second
   // sph_soil/refine at the same step would otherwise get the stale list of the first)
-  neighbor->build_one(list, 1);
+  SphSoilCompat::build_occasional_list(neighbor, list);
 
   if (region) region->prematch();
   std::vector<int> parents;

@@ -23,7 +23,7 @@
       __VA_ARGS__;                                                                        \
     } catch (LAMMPS_NS::LAMMPSException & e) {                                            \
       sph_soil_thrown = true;                                                             \
-      sph_soil_message = e.message;                                                       \
+      sph_soil_message = e.what();                                                        \
     }                                                                                     \
     auto sph_soil_output = ::testing::internal::GetCapturedStdout();                      \
     EXPECT_TRUE(sph_soil_thrown) << "no LAMMPS error; output:\n" << sph_soil_output;      \

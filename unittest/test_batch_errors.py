@@ -1,0 +1,123 @@
+#!/usr/bin/python3
+"""Errors reach the screen and the log of a plain batch run of lmp, on 1 and 2 MPI ranks.
+
+    unittest/test_batch_errors.py --lmp build/lmp --mpirun mpirun [--workdir DIR]
+
+Each case runs lmp as a separate process, the way a user does (`lmp -in in.x > out`, or under
+mpirun), provokes an error of the package and asserts that the message is in what the process
+wrote to its standard output (the screen) and in the log file:
+- a data file with a negative mass: an error of the rank that reads the atom (error->one),
+  the path whose message LAMMPS 29Sep2021 lost with exceptions on;
+- a run that goes unstable: a collective error (every rank stops with the same message).
+LAMMPS writes its log file on rank 0 only, so an error->one raised on another rank reaches the
+screen (mpirun forwards every rank's output) but not the log; that case checks the screen.
+"""
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+
+DATA = """bad data file
+
+2 atoms
+1 atom types
+
+0 1 xlo xhi
+0 1 ylo yhi
+0 1 zlo zhi
+
+Atoms # sph/soil
+
+1 1 {mass1} 0.1 1000 0 0.25 0.5 0.5
+2 1 {mass2} 0.1 1000 0 0.75 0.5 0.5
+"""
+
+READ_DATA = """units si
+atom_style sph/soil
+processors * 1 1
+read_data bad.data
+"""
+
+UNSTABLE = """units si
+dimension 2
+boundary p p p
+atom_style sph/soil
+atom_modify map array
+processors * 1 1
+lattice sq 0.01
+region box block 0 20 0 16 -0.5 0.5
+create_box 1 box
+create_atoms 1 box
+sph_soil/set all mass 0.265 h 0.012 density 2650
+group one id 300
+sph_soil/set one density 1e-300
+pair_style sph/soil
+pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0
+fix integrate all sph/soil
+timestep 2.0e-5
+neighbor 0.002 bin
+run 10
+"""
+
+
+def run_case(args, name, np, inputs, files, message, in_log=True):
+    work = os.path.join(args.workdir, name)
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    for filename, text in files.items():
+        with open(os.path.join(work, filename), 'w') as f:
+            f.write(text)
+    with open(os.path.join(work, 'in.case'), 'w') as f:
+        f.write(inputs)
+    cmd = [os.path.abspath(args.lmp), '-in', 'in.case']
+    if np > 1:
+        cmd = [args.mpirun, '-np', str(np)] + cmd
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
+    with open(os.path.join(work, 'screen'), 'w') as screen:
+        run = subprocess.run(cmd, cwd=work, env=env, stdout=screen, stderr=subprocess.STDOUT,
+                             timeout=120)
+    screen_text = open(os.path.join(work, 'screen')).read()
+    log_path = os.path.join(work, 'log.lammps')
+    log_text = open(log_path).read() if os.path.exists(log_path) else ''
+    problems = []
+    if run.returncode == 0:
+        problems.append('lmp exited with status 0')
+    if message not in screen_text:
+        problems.append('message not on the screen')
+    if in_log and message not in log_text:
+        problems.append('message not in log.lammps')
+    status = 'ok' if not problems else 'FAILED: ' + '; '.join(problems)
+    print(f'{name} ({np} rank{"s" if np > 1 else ""}): {status}')
+    if problems:
+        print('--- screen (last 15 lines):\n' + ''.join(screen_text.splitlines(True)[-15:]))
+        print('--- log.lammps (last 10 lines):\n' + ''.join(log_text.splitlines(True)[-10:]))
+    return not problems
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument('--lmp', required=True)
+    p.add_argument('--mpirun', default='mpirun')
+    p.add_argument('--workdir', default=os.path.join(os.getcwd(), 'batch_errors'))
+    args = p.parse_args()
+
+    bad_first = {'bad.data': DATA.format(mass1=-1.0, mass2=1.0)}
+    bad_second = {'bad.data': DATA.format(mass1=1.0, mass2=-2.0)}
+    ok = True
+    # error->one on rank 0 (atom 1 at x = 0.25 is rank 0's on two ranks)
+    for np in (1, 2):
+        ok &= run_case(args, f'data_file_error_np{np}', np, READ_DATA, bad_first,
+                       'Invalid mass -1 of atom 1 in Atoms section of data file: must be > 0')
+    # error->one on rank 1 (atom 2 at x = 0.75): the screen only, see the docstring
+    ok &= run_case(args, 'data_file_error_rank1_np2', 2, READ_DATA, bad_second,
+                   'Invalid mass -2 of atom 2 in Atoms section of data file: must be > 0', in_log=False)
+    # a collective error in a run
+    for np in (1, 2):
+        ok &= run_case(args, f'unstable_run_np{np}', np, UNSTABLE, {},
+                       'became unstable at step 1')
+    sys.exit(0 if ok else 1)
+
+
+if __name__ == '__main__':
+    main()
