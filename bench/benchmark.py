@@ -2,10 +2,12 @@
 """SPH_SOIL benchmark: particle-steps per second per core, side by side with LAMMPS's own
 sph/taitwater and smd/ulsph on the same 2D layout (in.bench_*), as ratios from one run.
 
-    bench/benchmark.py [--lmp build/lmp] [--repeat 1] [--json FILE] [--bars]
+    bench/benchmark.py [--lmp build/lmp] [--repeat 1] [--json FILE] [--bars] [--callgrind]
 
 Each input runs on 1 MPI rank; the best of --repeat runs counts, the styles taking turns. --bars also times the short
-aluminium-bar example on all cores. Prints JSON.
+aluminium-bar example on all cores. --callgrind adds instructions per particle-step of each style, counted by
+valgrind's callgrind over 50 steps minus a run of 0 steps (the set-up): a figure that does not drift with the load
+of the machine. Prints JSON.
 """
 import argparse
 import json
@@ -37,6 +39,28 @@ def run(lmp, infile, workdir, np=1, extra=()):
             'pair_fraction': float(pair[-1]) / seconds if pair else None}
 
 
+def instructions(lmp, infile, workdir, steps):
+    """Instructions of a whole lmp process (1 rank, no mpirun) counted by callgrind."""
+    out = os.path.join(workdir, f'callgrind.{steps}')
+    cmd = ['valgrind', '--tool=callgrind', f'--callgrind-out-file={out}', lmp, '-in', infile,
+           '-log', 'none', '-screen', 'none', '-var', 'steps', str(steps)]
+    subprocess.run(cmd, cwd=workdir, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    for line in open(out):
+        if line.startswith('summary:') or line.startswith('totals:'):
+            return int(line.split()[1])
+    raise SystemExit(f'benchmark: no instruction total in {out}')
+
+
+def instructions_per_particle_step(lmp, infile, workdir, atoms, steps=50):
+    return (instructions(lmp, infile, workdir, steps) - instructions(lmp, infile, workdir, 0)) / (atoms * steps)
+
+
+def lammps_version(lmp):
+    text = subprocess.run([lmp, '-h'], capture_output=True, text=True).stdout
+    m = re.search(r'Simulator - (.*)', text)
+    return m.group(1).strip() if m else 'unknown'
+
+
 def machine():
     model = ''
     try:
@@ -55,6 +79,7 @@ def main():
     p.add_argument('--repeat', type=int, default=1)
     p.add_argument('--json', default=None)
     p.add_argument('--bars', action='store_true', help='also time the short aluminium-bar example')
+    p.add_argument('--callgrind', action='store_true', help='also count instructions per particle-step')
     a = p.parse_args()
     lmp = os.path.abspath(a.lmp)
 
@@ -76,6 +101,12 @@ def main():
                     np=ncores, extra=['-var', 'short', '1'])
             r['note'] = 'short mode (300 steps); atoms include wall particles'
             results['aluminium_bars_short'] = r
+        if a.callgrind:
+            for name, infile in STYLES.items():
+                n = instructions_per_particle_step(lmp, os.path.join(HERE, infile), work,
+                                                   results[name]['atoms'])
+                results[name]['instructions_per_particle_step'] = n
+                print(f'benchmark: {name}: {n:.0f} instructions/particle-step', file=sys.stderr)
 
     ours = results['sph_soil']['particle_steps_per_second_per_core']
     summary = {
@@ -84,6 +115,7 @@ def main():
         'results': results,
         'ratio_sph_soil_to_sph_taitwater': ours / results['sph_taitwater']['particle_steps_per_second_per_core'],
         'ratio_sph_soil_to_smd_ulsph': ours / results['smd_ulsph']['particle_steps_per_second_per_core'],
+        'lammps': lammps_version(lmp),
     }
     text = json.dumps(summary, indent=2)
     print(text)

@@ -385,12 +385,9 @@ int FixSPHSoil::unpack_exchange(int nlocal, double *buf)
 }
 
 /* ----------------------------------------------------------------------
-   restart files: the current rates (between runs they are those of the last step)
-------------------------------------------------------------------------- */
-
-/* ----------------------------------------------------------------------
-   the elapsed time: restart files of LAMMPS before 2022 do not keep it, and a time-based
-   output or stop condition would restart from zero; stored here for every version
+   the elapsed time: restart files of LAMMPS 29Sep2021 do not keep it, which would then take
+   step * (current dt) and misplace time-based output and stop conditions; stored here for
+   every version
 ------------------------------------------------------------------------- */
 
 void FixSPHSoil::write_restart(FILE *fp)
@@ -412,6 +409,10 @@ void FixSPHSoil::restart(char *buf)
   update->atime = list[0];
   update->atimestep = update->ntimestep;
 }
+
+/* ----------------------------------------------------------------------
+   restart files: the current rates (between runs they are those of the last step)
+------------------------------------------------------------------------- */
 
 int FixSPHSoil::pack_restart(int i, double *buf)
 {
