@@ -180,7 +180,9 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
       avec->stress[i][k] += dtv * avec->stress_rate[i][k];
     }
     model_of_type[atom->type[i]]->return_to_admissible(avec->stress[i]);
-    if (first_unstable < 0 && unstable(i)) first_unstable = i;
+    // the positions only (a non-finite velocity makes them non-finite): what LAMMPS checks
+    // before the next neighbour list; the whole state is checked after the corrector
+    if (!std::isfinite(x[i][0] + x[i][1] + x[i][2]) && first_unstable < 0) first_unstable = i;
   }
   stop_if_unstable(first_unstable);
 }
