@@ -17,7 +17,8 @@
 #                 dpkg-source would choose (lammps-0~2022...) is not used.
 # --print-dir FILE  write the tree's path into FILE (for CMake)
 #
-# A tree already in the cache is used without any network access. What is unpacked is the
+# A tree already in the cache is used without any network access. SPH_SOIL_DEBIAN_MIRROR
+# overrides the Debian mirror (default: the one of the system's apt entries). What is unpacked is the
 # upstream tarball of Debian's source package (its *.orig.tar.*), checked against the SHA256
 # of Debian's signed source index. Debian's packaging patches are not applied: they are for
 # Debian's own binary packages (one hard-codes /usr/share/lammps/potentials in place of the
@@ -60,33 +61,36 @@ finish() {    # tree
   exit 0
 }
 
-# 1. a tree in the cache: no network
-for r in "${candidates[@]}"; do
-  read -r _ prefix _ <<< "$(release_info "$r")"
-  [ -f "$cache/lammps-$prefix/src/version.h" ] && finish "$cache/lammps-$prefix"
-done
+# A private sources list with deb-src entries for the Debian archive of the system's entries,
+# made on first need (a tree already in the cache needs no network).
+apt_ready=0
+setup_apt() {
+  [ "$apt_ready" -eq 1 ] && return
+  for tool in apt-get apt-cache; do
+    command -v "$tool" >/dev/null || { echo "fetch_lammps_source: '$tool' not found" >&2; exit 1; }
+  done
+  helper=/usr/lib/apt/apt-helper
+  [ -x "$helper" ] || { echo "fetch_lammps_source: $helper not found" >&2; exit 1; }
+  work=$cache/apt-private
+  mkdir -p "$work/sources.list.d" "$work/lists/partial" "$work/cache/archives/partial"
+  rm -f "$work/sources.list.d/"*
+  mirror=${SPH_SOIL_DEBIAN_MIRROR:-$(grep -hoE '^[[:space:]]*(deb|URIs:)[[:space:]]+[^ ]*debian[^ ]*' \
+           /etc/apt/sources.list /etc/apt/sources.list.d/*.list /etc/apt/sources.list.d/*.sources \
+           2>/dev/null | awk '{print $2}' | grep -v -- '-security' | head -n 1 || true)}
+  mirror=${mirror:-http://deb.debian.org/debian}
+  keyring=/usr/share/keyrings/debian-archive-keyring.gpg
+  apt_opts=(-o "Dir::Etc::SourceList=/dev/null" -o "Dir::Etc::SourceParts=$work/sources.list.d"
+            -o "Dir::State::Lists=$work/lists" -o "Dir::Cache=$work/cache"
+            -o "Debug::NoLocking=1" -o "APT::Sandbox::User=root")
+  apt_ready=1
+}
 
-for tool in apt-get apt-cache; do
-  command -v "$tool" >/dev/null || { echo "fetch_lammps_source: '$tool' not found" >&2; exit 1; }
-done
-helper=/usr/lib/apt/apt-helper
-[ -x "$helper" ] || { echo "fetch_lammps_source: $helper not found" >&2; exit 1; }
-
-# 2. a private sources list with deb-src entries for the Debian archive of the system's entries
-work=$cache/apt-private
-mkdir -p "$work/sources.list.d" "$work/lists/partial" "$work/cache/archives/partial"
-rm -f "$work/sources.list.d/"*
-mirror=$(grep -hoE '^[[:space:]]*(deb|URIs:)[[:space:]]+[^ ]*debian[^ ]*' /etc/apt/sources.list \
-           /etc/apt/sources.list.d/*.list /etc/apt/sources.list.d/*.sources 2>/dev/null \
-         | awk '{print $2}' | grep -v -- '-security' | head -n 1 || true)
-mirror=${mirror:-http://deb.debian.org/debian}
-keyring=/usr/share/keyrings/debian-archive-keyring.gpg
-apt_opts=(-o "Dir::Etc::SourceList=/dev/null" -o "Dir::Etc::SourceParts=$work/sources.list.d"
-          -o "Dir::State::Lists=$work/lists" -o "Dir::Cache=$work/cache"
-          -o "Debug::NoLocking=1" -o "APT::Sandbox::User=root")
-
-for r in "${candidates[@]}"; do
-  read -r suite prefix date <<< "$(release_info "$r")"
+# Fetch and unpack release $1 into the cache; returns 1 if its suite cannot be reached or does
+# not offer it (the caller tries the next candidate), exits on any other failure.
+fetch() {
+  local suite prefix date version line uri file size hash download tree tmp top
+  read -r suite prefix date <<< "$(release_info "$1")"
+  setup_apt
   printf 'Types: deb-src\nURIs: %s\nSuites: %s\nComponents: main\nSigned-By: %s\n' \
     "$mirror" "$suite" "$keyring" > "$work/sources.list.d/debian-src.sources"
   rm -rf "$work/lists"; mkdir -p "$work/lists/partial"
@@ -94,13 +98,13 @@ for r in "${candidates[@]}"; do
   if ! apt-get "${apt_opts[@]}" -qq update 2> "$work/update.log" \
      || grep -qE '^(E:|W: Failed)' "$work/update.log"; then
     echo "fetch_lammps_source: suite '$suite' not reachable:" >&2; sed 's/^/  /' "$work/update.log" >&2
-    continue
+    return 1
   fi
   version=$(apt-cache "${apt_opts[@]}" showsrc lammps 2>/dev/null | sed -n 's/^Version: //p' \
             | grep "^$prefix" | sort -V | tail -n 1 || true)
   if [ -z "$version" ]; then
     echo "fetch_lammps_source: '$suite' offers no lammps source starting with $prefix" >&2
-    continue
+    return 1
   fi
   # the upstream tarball's address and checksum, from apt's verified index
   download=$work/download; rm -rf "$download"; mkdir -p "$download"
@@ -128,6 +132,13 @@ for r in "${candidates[@]}"; do
     echo "fetch_lammps_source: $file does not hold LAMMPS $date (see $tmp/src/version.h)" >&2; exit 1; }
   rm -rf "$tree"; mv "$tmp" "$tree"
   finish "$tree"
+}
+
+# in order of preference: the tree in the cache, else fetched; else the next candidate
+for r in "${candidates[@]}"; do
+  read -r _ prefix _ <<< "$(release_info "$r")"
+  [ -f "$cache/lammps-$prefix/src/version.h" ] && finish "$cache/lammps-$prefix"
+  fetch "$r" || continue
 done
 echo "fetch_lammps_source: no LAMMPS source could be fetched for '$release'" >&2
 exit 1

@@ -9,11 +9,11 @@
    traditional make, with no define set, and on a release in between it
    takes, call by call, whichever form that release has.
 
-   How: a helper has a "newer" overload, whose return type is the decltype
-   of the newer call, so that it exists only where that call is well-formed
-   (SFINAE), and an "older" one; the newer takes Newer, a better match than
-   the older's Older. Both are templates on the LAMMPS class, so only the
-   chosen body is ever compiled.
+   How: a helper has a preferred overload, whose return type is the
+   decltype of its LAMMPS call, so that it exists only where that call is
+   well-formed (SFINAE), and a fallback; the preferred one takes Preferred,
+   a better match than the fallback's Fallback. Both are templates on the
+   LAMMPS class, so only the chosen body is ever compiled.
 
    What changed (and what is detected):
    - AtomVec field lists: space-separated `char *` -> std::vector<std::string>
@@ -54,6 +54,9 @@
 
 namespace LAMMPS_NS {
 
+class Fix;
+class Pair;
+
 // Releases before add_request() have no NeighConst::REQ_* flags. Qualified lookup of
 // NeighConst::REQ_FULL finds LAMMPS's own enumerator where it exists (a direct member wins) and
 // falls back to this namespace, nominated below, only where it does not; there the flags go
@@ -67,8 +70,8 @@ namespace NeighConst {
 
 namespace SphSoilCompat {
 
-struct Older {};
-struct Newer : Older {};
+struct Fallback {};
+struct Preferred : Fallback {};
 
 /* ---------------------------------------------------------------------- */
 // AtomVec
@@ -100,11 +103,11 @@ using PropertyAtomName = FirstParameter<decltype(&AtomVec::property_atom)>::type
 
 // Point the per-atom table entry `name` at new storage, or add it if there is none.
 namespace detail {
-  template <class AtomT> auto peratom_count(AtomT *atom, Newer) -> decltype((int) atom->peratom.size())
+  template <class AtomT> auto peratom_count(AtomT *atom, Preferred) -> decltype((int) atom->peratom.size())
   {
     return (int) atom->peratom.size();
   }
-  template <class AtomT> auto peratom_count(AtomT *atom, Older) -> decltype((int) atom->nperatom)
+  template <class AtomT> auto peratom_count(AtomT *atom, Fallback) -> decltype((int) atom->nperatom)
   {
     return atom->nperatom;
   }
@@ -113,7 +116,7 @@ namespace detail {
 template <class AtomT>
 void set_peratom(AtomT *atom, const std::string &name, void *address, int datatype, int cols)
 {
-  const int n = detail::peratom_count(atom, Newer());
+  const int n = detail::peratom_count(atom, Preferred());
   for (int i = 0; i < n; i++) {
     auto &entry = atom->peratom[i];
     if (name == entry.name) {
@@ -130,19 +133,19 @@ void set_peratom(AtomT *atom, const std::string &name, void *address, int dataty
 // Neighbour lists
 
 // The older request path needs the client's kind (the newer add_request() overloads dispatch on it).
-inline bool client_is_fix(const class Pair *) { return false; }
-inline bool client_is_fix(const class Fix *) { return true; }
+inline bool client_is_fix(const Pair *) { return false; }
+inline bool client_is_fix(const Fix *) { return true; }
 
 namespace detail {
   template <class N, class Client>
-  auto request(N *neighbor, Client *client, int flags, int /*instance*/, Newer)
+  auto request(N *neighbor, Client *client, int flags, int /*instance*/, Preferred)
       -> decltype((void) neighbor->add_request(client, flags))
   {
     neighbor->add_request(client, flags);
   }
   // the older form: the flags' meaning set field by field
   template <class N, class Client>
-  void request(N *neighbor, Client *client, int flags, int instance, Older)
+  void request(N *neighbor, Client *client, int flags, int instance, Fallback)
   {
     const int irequest = neighbor->request(client, instance);
     auto *request = neighbor->requests[irequest];
@@ -163,26 +166,26 @@ namespace detail {
 template <class Client>
 void request_half_neighbor_list(Neighbor *neighbor, Client *client, int instance = 0)
 {
-  detail::request(neighbor, client, 0, instance, Newer());
+  detail::request(neighbor, client, 0, instance, Preferred());
 }
 
 // An occasional full list for a fix (built on demand with build_occasional_list()).
 template <class Client> void request_occasional_full_list(Neighbor *neighbor, Client *client)
 {
-  detail::request(neighbor, client, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL, 0, Newer());
+  detail::request(neighbor, client, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL, 0, Preferred());
 }
 
 // A command's occasional full list: request before lmp->init(), find after it with
 // command_neighbor_list(handle).
 namespace detail {
   template <class N>
-  auto request_command(N *neighbor, Command *command, const char *style, Newer)
+  auto request_command(N *neighbor, Command *command, const char *style, Preferred)
       -> decltype((void) neighbor->add_request(command, style, 0), 0)
   {
     neighbor->add_request(command, style, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
     return 0;
   }
-  template <class N> int request_command(N *neighbor, Command *command, const char *style, Older)
+  template <class N> int request_command(N *neighbor, Command *command, const char *style, Fallback)
   {
     const int irequest = neighbor->request(command);
     auto *request = neighbor->requests[irequest];
@@ -195,12 +198,12 @@ namespace detail {
     return irequest;
   }
   template <class N>
-  auto command_list(N *neighbor, Command *command, int /*handle*/, Newer)
+  auto command_list(N *neighbor, Command *command, int /*handle*/, Preferred)
       -> decltype(neighbor->find_list(command))
   {
     return neighbor->find_list(command);
   }
-  template <class N> NeighList *command_list(N *neighbor, Command * /*command*/, int handle, Older)
+  template <class N> NeighList *command_list(N *neighbor, Command * /*command*/, int handle, Fallback)
   {
     return neighbor->lists[handle];
   }
@@ -208,12 +211,12 @@ namespace detail {
 
 inline int request_command_full_list(Neighbor *neighbor, Command *command, const char *style)
 {
-  return detail::request_command(neighbor, command, style, Newer());
+  return detail::request_command(neighbor, command, style, Preferred());
 }
 
 inline NeighList *command_neighbor_list(Neighbor *neighbor, Command *command, int handle)
 {
-  return detail::command_list(neighbor, command, handle, Newer());
+  return detail::command_list(neighbor, command, handle, Preferred());
 }
 
 // Build an occasional list now, even if it was built earlier in this step (a second command
@@ -222,12 +225,12 @@ inline NeighList *command_neighbor_list(Neighbor *neighbor, Command *command, in
 // lists stale, and callers call build() first.
 namespace detail {
   template <class N>
-  auto build_occasional(N *neighbor, NeighList *list, Newer)
+  auto build_occasional(N *neighbor, NeighList *list, Preferred)
       -> decltype(neighbor->build_one(list, 1))
   {
     return neighbor->build_one(list, 1);
   }
-  template <class N> void build_occasional(N *neighbor, NeighList *list, Older)
+  template <class N> void build_occasional(N *neighbor, NeighList *list, Fallback)
   {
     neighbor->build_one(list);
   }
@@ -235,7 +238,7 @@ namespace detail {
 
 inline void build_occasional_list(Neighbor *neighbor, NeighList *list)
 {
-  detail::build_occasional(neighbor, list, Newer());
+  detail::build_occasional(neighbor, list, Preferred());
 }
 
 /* ---------------------------------------------------------------------- */
@@ -243,11 +246,11 @@ inline void build_occasional_list(Neighbor *neighbor, NeighList *list)
 
 namespace detail {
   template <class D>
-  auto find_region(D *domain, const std::string &id, Newer) -> decltype(domain->get_region_by_id(id))
+  auto find_region(D *domain, const std::string &id, Preferred) -> decltype(domain->get_region_by_id(id))
   {
     return domain->get_region_by_id(id);
   }
-  template <class D> Region *find_region(D *domain, const std::string &id, Older)
+  template <class D> Region *find_region(D *domain, const std::string &id, Fallback)
   {
     const int index = domain->find_region(id);
     return index < 0 ? nullptr : domain->regions[index];
@@ -257,7 +260,7 @@ namespace detail {
 // A region by its ID, nullptr if there is none.
 inline Region *find_region(Domain *domain, const std::string &id)
 {
-  return detail::find_region(domain, id, Newer());
+  return detail::find_region(domain, id, Preferred());
 }
 
 /* ---------------------------------------------------------------------- */
