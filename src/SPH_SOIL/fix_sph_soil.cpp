@@ -239,8 +239,8 @@ bool FixSPHSoil::unstable(int i) const
 
 // Collective: every rank learns the lowest ID of an unstable particle, so that the error is
 // raised on all ranks and reaches the screen and the log (an error on one rank would reach
-// only that rank's screen). Called right after the positions move, so that it comes before
-// LAMMPS's own checks of the coordinates in the neighbour-list decision.
+// only that rank's screen). Called after the predictor, before LAMMPS's own checks of the
+// coordinates at the next neighbour-list build, and after the corrector.
 void FixSPHSoil::stop_if_unstable(int first_unstable)
 {
   struct {
