@@ -94,45 +94,7 @@ TEST_F(SoilPhysics, PeriodicPatchConservesMassAndMomentum)
   for (int k = 1; k <= 3; k++) EXPECT_NEAR(after[k], before[k], 1e-12 * scale) << "component " << k;
 }
 
-TEST_F(SoilPhysics, SameResultOnOneAndTwoRanks)
-{
-  // the run on all ranks against the same run on rank 0 alone (MPI_COMM_SELF), both
-  // from one data file so that atom IDs agree
-  HIDE_OUTPUT([&] { command("variable vx atom 0.02*sin(2*PI*y/0.16)"); });
-  periodic_patch();
-  const std::vector<std::string> read = {"units si", "dimension 2", "atom_style sph/soil",
-                                         "atom_modify map array", "read_data patch.data"};
-  HIDE_OUTPUT([&] {
-    command("write_data patch.data");
-    command("clear");
-    for (const auto &line : read) command(line);
-  });
-  soil_run_setup();
-  HIDE_OUTPUT([&] { command("run 200 post no"); });
-  auto parallel = gather_state(lmp);
-
-  std::map<tagint, std::vector<double>> serial;
-  if (rank() == 0) {
-    const char *argv[] = {"serial", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
-    auto single = new LAMMPS(8, (char **) argv, MPI_COMM_SELF);
-    for (const auto &line : read) single->input->one(line);
-    std::swap(single, lmp);
-    soil_run_setup();
-    command("run 200 post no");
-    std::swap(single, lmp);
-    // on a 1-rank instance the local atoms are all atoms
-    for (int i = 0; i < single->atom->nlocal; i++) serial[single->atom->tag[i]] = atom_state(single, i);
-    delete single;
-  }
-  if (rank() != 0) return;
-  ASSERT_EQ(serial.size(), parallel.size());
-  for (const auto &entry : serial) {
-    const auto &p = parallel.at(entry.first);
-    for (int k = 1; k <= 2; k++)
-      EXPECT_NEAR(p[k], entry.second[k], 1e-10 * std::fabs(entry.second[k]) + 1e-15)
-          << "atom " << entry.first << " coordinate " << k;
-  }
-}
+// the same physics on 1, 2 and 4 ranks: test_parallel.cpp
 
 TEST_F(SoilPhysics, RestartAndSplitRunsContinueIdentically)
 {

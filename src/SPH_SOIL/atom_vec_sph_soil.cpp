@@ -87,7 +87,11 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   //  comm (every step):  rho, stress, vest   - the pair sum needs them from ghosts
   //  reverse (every step): drho, strain rate, spin - ghosts' shares of the pair sums
   //  border:             + mass, h, wall data - constant between reneighborings
-  //  exchange/restart:   the whole state; the rates are recomputed before use
+  //  exchange:           the whole state and the stress rate: atoms migrate between the
+  //                      predictor and the force evaluation, which recomputes the other
+  //                      rates, while the corrector still needs the stress rate of the
+  //                      step's start (fix sph/soil carries its own saved rates)
+  //  restart:            the whole state (fix sph/soil writes the rates)
   //  data file:          the whole state, see doc/atom_style_sph_soil.rst
   const std::vector<std::string> rates = {"drho", STRESS_RATE_NAME, STRAIN_RATE_NAME, SPIN_NAME};
   const std::vector<std::string> state = {"rmass",     "rho",      H_NAME,          "vest",
@@ -108,7 +112,9 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   assign_fields(fields_reverse, {"drho", STRAIN_RATE_NAME, SPIN_NAME}, field_storage[4]);
   assign_fields(fields_border, border, field_storage[5]);
   assign_fields(fields_border_vel, border, field_storage[6]);
-  assign_fields(fields_exchange, state, field_storage[7]);
+  std::vector<std::string> exchange = state;
+  exchange.push_back(STRESS_RATE_NAME);
+  assign_fields(fields_exchange, exchange, field_storage[7]);
   assign_fields(fields_restart, state, field_storage[8]);
   assign_fields(fields_create, all, field_storage[9]);
   // Data files: LAMMPS 29Sep2021 reads lines of at most 255 characters, room for about ten
