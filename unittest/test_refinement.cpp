@@ -24,12 +24,12 @@ class Refinement : public LAMMPSTest {
 
   // A periodic lattice of spacing 1 cm with mass rho0 d^D (so the derived d_p is 1 cm),
   // optionally disordered, with velocities and stresses that vary in space.
-  void patch(int dimension, int n, bool disorder)
+  void patch(int dimension, int n, bool disorder, const std::string &atom_style = "sph/soil")
   {
     HIDE_OUTPUT([&] {
       command(fmt::format("dimension {}", dimension));
       command("boundary p p p");
-      command("atom_style sph/soil");
+      command("atom_style " + atom_style);
       command("atom_modify map array");
       if (dimension == 2) {
         command("lattice sq 0.01 origin 0.5 0.5 0.0");
@@ -233,6 +233,29 @@ TEST_F(Refinement, SameSplitsOnOneAndTwoRanks)
       EXPECT_NEAR(p[k], entry.second[k], 1e-10 * std::fabs(entry.second[k]) + 1e-15)
           << "atom " << entry.first << " " << state_names()[k];
   }
+}
+
+// Under atom_style hybrid the splits go through the hybrid style: the other sub-style's fields
+// (here the charge) are copied to the daughters, and nothing is lost or crashes.
+TEST_F(Refinement, WorksUnderAtomStyleHybrid)
+{
+  patch(2, 6, false, "hybrid sph/soil charge");
+  HIDE_OUTPUT([&] {
+    command("set group all charge 0.25");
+    command("sph_soil/refine all separation 0.5 smoothing 0.5");
+  });
+  ASSERT_EQ(lmp->atom->natoms, 4 * 36);
+  for (int i = 0; i < lmp->atom->nlocal; i++) EXPECT_EQ(lmp->atom->q[i], 0.25) << "atom " << lmp->atom->tag[i];
+  const double mass = totals()[0];
+  EXPECT_NEAR(mass, 36 * 2650 * 1e-4, 1e-12);
+  HIDE_OUTPUT([&] {
+    command("fix integrate all sph/soil cfl 0.1");
+    command("fix refine all sph/soil/refine 5 threshold 1e-12 maxlevel 2");
+    command("run 10 post no");
+  });
+  ASSERT_EQ(lmp->atom->natoms, 16 * 36);
+  for (int i = 0; i < lmp->atom->nlocal; i++) EXPECT_EQ(lmp->atom->q[i], 0.25) << "atom " << lmp->atom->tag[i];
+  EXPECT_NEAR(totals()[0], mass, 1e-12);
 }
 
 TEST_F(Refinement, RestartAfterSplitsContinuesIdentically)

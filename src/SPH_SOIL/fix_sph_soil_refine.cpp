@@ -191,7 +191,7 @@ void FixSPHSoilRefine::report_parameters()
 
 void FixSPHSoilRefine::end_of_step()
 {
-  auto avec = dynamic_cast<AtomVecSPHSoil *>(atom->avec);
+  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   if (region) region->prematch();
   std::vector<int> parents;
   const int nlocal = atom->nlocal;
@@ -225,7 +225,7 @@ double FixSPHSoilRefine::compute_vector(int n)
   if (n == 0) return last_split_step == update->ntimestep ? (double) last_split : 0.0;
   if (n == 1) return (double) total_split;
   const int wanted = n - 2;
-  auto avec = dynamic_cast<AtomVecSPHSoil *>(atom->avec);
+  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   bigint count = 0, all = 0;
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit) {

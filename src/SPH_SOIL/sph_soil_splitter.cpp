@@ -204,8 +204,10 @@ bigint SPHSoilSplitter::split(const std::vector<int> &parents, NeighList *list)
     const double parent_force[3] = {atom->f[i][0], atom->f[i][1], atom->f[i][2]};
     for (int k = 1; k < count; k++) {
       const int j = atom->nlocal;
-      if (j == atom->nmax) avec->grow(0);    // moves every per-atom array
-      avec->copy(i, j, 0);
+      // through the atom style in use (under atom_style hybrid, the hybrid style): every
+      // per-atom array moves with grow and is copied, the fixes' arrays with them
+      if (j == atom->nmax) atom->avec->grow(0);
+      atom->avec->copy(i, j, 0);
       atom->tag[j] = first_tag[n] + k - 1;
       atom->nlocal++;
       set_daughter(j, n, k, parent_level, parent_mass, parent_h, parent_force);
