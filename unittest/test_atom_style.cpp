@@ -371,7 +371,7 @@ TEST_F(AtomStyleSPHSoil, BadSetCommands)
   HIDE_OUTPUT([&] { command("variable bad atom 1.0-0.01*id"); });
   EXPECT_LAMMPS_ERROR(".*Illegal sph_soil/set density value 0 for atom 100: must be > 0.*",
                       command("sph_soil/set all density v_bad"));
-  EXPECT_LAMMPS_ERROR(".*Illegal sph_soil/set level -1: the refinement level must be >= 0.*",
+  EXPECT_LAMMPS_ERROR(".*Illegal sph_soil/set level -1: must be in 0 to 30.*",
                       command("sph_soil/set all level -1"));
   EXPECT_LAMMPS_ERROR(".*Illegal sph_soil/set command: unknown keyword colour.*",
                       command("sph_soil/set all colour 3"));
@@ -410,13 +410,13 @@ TEST_F(AtomStyleSPHSoil, BadDataFiles)
   };
   const std::string tail = "";
   write("1 1 -1.0 0.1 1000 0 0.5 0.5 0.5" + tail);
-  EXPECT_LAMMPS_ERROR(".*Invalid mass -1 of atom 1 in Atoms section of data file: must be > 0.*", read());
+  EXPECT_LAMMPS_ERROR(".*Invalid mass -1 of atom 1 in Atoms section of data file: must be finite and > 0.*", read());
   write("1 1 1.0 -0.1 1000 0 0.5 0.5 0.5" + tail);
   EXPECT_LAMMPS_ERROR(".*Invalid smoothing length h -0.1 of atom 1 .*must be >= 0.*", read());
   write("1 1 1.0 0.1 0 0 0.5 0.5 0.5" + tail);
   EXPECT_LAMMPS_ERROR(".*Invalid density 0 of atom 1 in Atoms section of data file: must be > 0.*", read());
   write("1 1 1.0 0.1 1000 -2 0.5 0.5 0.5" + tail);
-  EXPECT_LAMMPS_ERROR(".*Invalid refinement level -2 of atom 1 .*must be >= 0.*", read());
+  EXPECT_LAMMPS_ERROR(".*Invalid refinement level -2 of atom 1 .*must be in 0 to 30.*", read());
   write("1 1 1.0 0.1 1000 0 0.5 0.5");
   // (LAMMPS's own message, worded differently by newer releases)
   EXPECT_LAMMPS_ERROR(".*Incorrect (atom format in data file|format in Atoms section of data file).*",

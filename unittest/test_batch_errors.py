@@ -108,10 +108,10 @@ def main():
     # error->one on rank 0 (atom 1 at x = 0.25 is rank 0's on two ranks)
     for np in (1, 2):
         ok &= run_case(args, f'data_file_error_np{np}', np, READ_DATA, bad_first,
-                       'Invalid mass -1 of atom 1 in Atoms section of data file: must be > 0')
+                       'Invalid mass -1 of atom 1 in Atoms section of data file: must be finite and > 0')
     # error->one on rank 1 (atom 2 at x = 0.75): the screen only, see the docstring
     ok &= run_case(args, 'data_file_error_rank1_np2', 2, READ_DATA, bad_second,
-                   'Invalid mass -2 of atom 2 in Atoms section of data file: must be > 0', in_log=False)
+                   'Invalid mass -2 of atom 2 in Atoms section of data file: must be finite and > 0', in_log=False)
     # a collective error in a run
     for np in (1, 2):
         ok &= run_case(args, f'unstable_run_np{np}', np, UNSTABLE, {},

@@ -6,6 +6,7 @@
 
 #include "atom.h"
 #include "error.h"
+#include "soil_split.h"
 #include "sph_soil_compat.h"
 
 #include <cmath>
@@ -179,8 +180,9 @@ void AtomVecSPHSoil::create_atom_post(int ilocal)
 void AtomVecSPHSoil::data_atom_post(int ilocal)
 {
   const tagint id = atom->tag[ilocal];
-  if (!(rmass[ilocal] > 0.0))
-    SphSoilCompat::error_one(lmp, FLERR, "Invalid mass {} of atom {} in Atoms section of data file: must be > 0",
+  if (!(rmass[ilocal] > 0.0) || !std::isfinite(rmass[ilocal]))
+    SphSoilCompat::error_one(lmp, FLERR,
+               "Invalid mass {} of atom {} in Atoms section of data file: must be finite and > 0",
                rmass[ilocal], id);
   if (!(smoothing_length[ilocal] >= 0.0) || !std::isfinite(smoothing_length[ilocal]))
     SphSoilCompat::error_one(lmp, FLERR,
@@ -189,16 +191,35 @@ void AtomVecSPHSoil::data_atom_post(int ilocal)
   if (!(rho[ilocal] > 0.0) || !std::isfinite(rho[ilocal]))
     SphSoilCompat::error_one(lmp, FLERR, "Invalid density {} of atom {} in Atoms section of data file: must be > 0",
                rho[ilocal], id);
-  if (level[ilocal] < 0)
+  if (level[ilocal] < 0 || level[ilocal] > SPHSoil::MAX_LEVEL)
     SphSoilCompat::error_one(lmp, FLERR,
-               "Invalid refinement level {} of atom {} in Atoms section of data file: must be >= 0",
-               level[ilocal], id);
+               "Invalid refinement level {} of atom {} in Atoms section of data file: must be in 0 "
+               "to {}", level[ilocal], id, SPHSoil::MAX_LEVEL);
   drho[ilocal] = 0.0;
   for (int k = 0; k < 3; k++) vest[ilocal][k] = wall_normal[ilocal][k] = 0.0;
   wall_distance[ilocal] = 0.0;
   for (int k = 0; k < NVOIGT; k++)
     stress[ilocal][k] = stress_rate[ilocal][k] = total_strain[ilocal][k] = strain_rate[ilocal][k] = 0.0;
   for (int k = 0; k < NSPIN; k++) spin[ilocal][k] = 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   a line of the Velocities section: velocity and stress, which must be finite
+------------------------------------------------------------------------- */
+
+void AtomVecSPHSoil::data_vel(int ilocal, SphSoilCompat::DataVelValues values)
+{
+  AtomVec::data_vel(ilocal, values);
+  double sum = 0.0;
+  for (int k = 0; k < NVOIGT; k++) sum += stress[ilocal][k];
+  for (int k = 0; k < 3; k++) sum += atom->v[ilocal][k];
+  if (!std::isfinite(sum))
+    SphSoilCompat::error_one(lmp, FLERR,
+               "Invalid velocity or stress of atom {} in Velocities section of data file: must be "
+               "finite (got velocity {} {} {}, stress {} {} {} {} {} {})", atom->tag[ilocal],
+               atom->v[ilocal][0], atom->v[ilocal][1], atom->v[ilocal][2], stress[ilocal][0],
+               stress[ilocal][1], stress[ilocal][2], stress[ilocal][3], stress[ilocal][4],
+               stress[ilocal][5]);
 }
 
 /* ----------------------------------------------------------------------

@@ -30,6 +30,7 @@ class AtomVecSPHSoil : public AtomVec {
   void force_clear(int, size_t) override;
   void create_atom_post(int) override;
   void data_atom_post(int) override;
+  void data_vel(int, SphSoilCompat::DataVelValues) override;
   int property_atom(SphSoilCompat::PropertyAtomName) override;
   void pack_property_atom(int, double *, int, int) override;
 

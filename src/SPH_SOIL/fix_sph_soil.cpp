@@ -13,6 +13,7 @@
 #include "modify.h"
 #include "pair_sph_soil.h"
 #include "soil_constitutive.h"
+#include "sph_soil_input.h"
 #include "update.h"
 #include "utils.h"
 
@@ -44,12 +45,11 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal fix sph/soil command: keyword {} needs a value", arg[iarg]);
     if (strcmp(arg[iarg], "cfl") == 0) {
-      cfl = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!(cfl > 0.0 && cfl <= 1.0))
-        error->all(FLERR, "Illegal fix sph/soil cfl {}: must be in (0, 1], typically 0.1 to 0.2", cfl);
+      cfl = SphSoilInput::number(FLERR, lmp, "fix sph/soil cfl", arg[iarg + 1],
+                                 SphSoilInput::between(0.0, 1.0, true, false));
     } else if (strcmp(arg[iarg], "dtmax") == 0) {
-      max_dt = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!(max_dt > 0.0)) error->all(FLERR, "Illegal fix sph/soil dtmax {}: must be > 0", max_dt);
+      max_dt = SphSoilInput::number(FLERR, lmp, "fix sph/soil dtmax", arg[iarg + 1],
+                                    SphSoilInput::above(0.0));
     } else {
       error->all(FLERR, "Illegal fix sph/soil keyword {} (allowed: cfl, dtmax)", arg[iarg]);
     }

@@ -18,7 +18,9 @@
 #include "region.h"
 #include "soil_constitutive.h"
 #include "soil_refine_error.h"
+#include "soil_split.h"
 #include "sph_soil_compat.h"
+#include "sph_soil_input.h"
 #include "sph_soil_splitter.h"
 #include "update.h"
 #include "utils.h"
@@ -52,31 +54,21 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal fix sph/soil/refine command: keyword {} needs a value", keyword);
     const char *value = arg[iarg + 1];
-    if (keyword == "threshold") {
-      threshold = utils::numeric(FLERR, value, false, lmp);
-      if (!(threshold >= 0.0)) error->all(FLERR, "Illegal fix sph/soil/refine threshold {}: must be >= 0", threshold);
-    } else if (keyword == "separation") {
-      splitter->separation = utils::numeric(FLERR, value, false, lmp);
-      if (!(splitter->separation > 0.0 && splitter->separation < 1.0))
-        error->all(FLERR, "Illegal fix sph/soil/refine separation {}: must be in (0, 1)", splitter->separation);
-    } else if (keyword == "smoothing") {
-      splitter->smoothing_ratio = utils::numeric(FLERR, value, false, lmp);
-      if (!(splitter->smoothing_ratio > 0.0 && splitter->smoothing_ratio < 1.0))
-        error->all(FLERR, "Illegal fix sph/soil/refine smoothing {}: must be in (0, 1)", splitter->smoothing_ratio);
-    } else if (keyword == "dref") {
-      splitter->reference_spacing = utils::numeric(FLERR, value, false, lmp);
-      if (!(splitter->reference_spacing > 0.0))
-        error->all(FLERR, "Illegal fix sph/soil/refine dref {}: must be > 0", splitter->reference_spacing);
+    if (splitter->parse_keyword("fix sph/soil/refine", keyword, value)) {
+      continue;
+    } else if (keyword == "threshold") {
+      threshold = SphSoilInput::number(FLERR, lmp, "fix sph/soil/refine threshold", value,
+                                       SphSoilInput::at_least(0.0));
     } else if (keyword == "maxlevel") {
-      maxlevel = utils::inumeric(FLERR, value, false, lmp);
-      if (maxlevel < 1 || maxlevel > 30) error->all(FLERR, "Illegal fix sph/soil/refine maxlevel {}: must be in 1 to 30", maxlevel);
+      maxlevel = SphSoilInput::integer(FLERR, lmp, "fix sph/soil/refine maxlevel", value, 1,
+                                       SPHSoil::MAX_LEVEL);
     } else if (keyword == "region") {
       region_id = value;
       if (!SphSoilCompat::find_region(domain, region_id))
         error->all(FLERR, "Fix sph/soil/refine region {} does not exist", region_id);
     } else {
-      error->all(FLERR, "Illegal fix sph/soil/refine keyword {} (allowed: threshold, separation, "
-                        "smoothing, dref, maxlevel, region)", keyword);
+      error->all(FLERR, "Illegal fix sph/soil/refine keyword {} (allowed: threshold, {}, maxlevel, "
+                        "region)", keyword, SPHSoilSplitter::KEYWORDS);
     }
   }
 

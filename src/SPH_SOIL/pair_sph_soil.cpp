@@ -15,6 +15,7 @@
 #include "neighbor.h"
 #include "soil_kernel.h"
 #include "sph_soil_compat.h"
+#include "sph_soil_input.h"
 #include "utils.h"
 
 #include <cmath>
@@ -82,13 +83,11 @@ void PairSPHSoil::settings(int narg, char **arg)
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style sph/soil command: keyword {} needs a value", arg[iarg]);
     if (strcmp(arg[iarg], "alpha") == 0) {
-      viscosity_alpha = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (viscosity_alpha < 0.0)
-        error->all(FLERR, "Illegal pair_style sph/soil alpha {}: must be >= 0", viscosity_alpha);
+      viscosity_alpha = SphSoilInput::number(FLERR, lmp, "pair_style sph/soil alpha", arg[iarg + 1],
+                                             SphSoilInput::at_least(0.0));
     } else if (strcmp(arg[iarg], "beta") == 0) {
-      viscosity_beta = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (viscosity_beta < 0.0)
-        error->all(FLERR, "Illegal pair_style sph/soil beta {}: must be >= 0", viscosity_beta);
+      viscosity_beta = SphSoilInput::number(FLERR, lmp, "pair_style sph/soil beta", arg[iarg + 1],
+                                            SphSoilInput::at_least(0.0));
     } else if (strcmp(arg[iarg], "wall") == 0) {
       if (strcmp(arg[iarg + 1], "noslip") == 0) free_slip = false;
       else if (strcmp(arg[iarg + 1], "freeslip") == 0) free_slip = true;

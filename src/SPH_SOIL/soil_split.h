@@ -21,6 +21,9 @@
 namespace SPHSoil {
 
 constexpr int MAX_DAUGHTERS = 8;
+// the deepest refinement level: a level-30 particle has 2^-30 of the original spacing, and a
+// particle split down to it 4^30 (2D) daughters, beyond any run; 2^level must fit an int
+constexpr int MAX_LEVEL = 30;
 
 inline int daughter_count(int dimension)
 {

@@ -18,8 +18,9 @@
    What changed (and what is detected):
    - AtomVec field lists: space-separated `char *` -> std::vector<std::string>
      (the member's type picks an assign_fields() overload)
-   - AtomVec::property_atom(char *) -> property_atom(const std::string &)
-     (PropertyAtomName: the parameter type of the base class's function)
+   - AtomVec::property_atom(char *) -> property_atom(const std::string &), and
+     AtomVec::data_vel(int, char **) -> data_vel(int, const std::vector<std::string> &)
+     (PropertyAtomName, DataVelValues: the parameter types of the base class's functions)
    - Atom::peratom: array + nperatom, `char *` names -> std::vector, std::string
      (whether Atom has nperatom)
    - neighbour list requests: Neighbor::request() and public NeighRequest
@@ -100,6 +101,14 @@ template <class C, class R, class A> struct FirstParameter<R (C::*)(A) const> {
   using type = A;
 };
 using PropertyAtomName = FirstParameter<decltype(&AtomVec::property_atom)>::type;
+
+// The parameter type of the values in AtomVec::data_vel(int, values): `char **` in 29Sep2021,
+// `const std::vector<std::string> &` in later releases.
+template <class F> struct SecondParameter;
+template <class C, class R, class A, class B> struct SecondParameter<R (C::*)(A, B)> {
+  using type = B;
+};
+using DataVelValues = SecondParameter<decltype(&AtomVec::data_vel)>::type;
 
 // Point the per-atom table entry `name` at new storage, or add it if there is none.
 namespace detail {

@@ -43,23 +43,14 @@ void SPHSoilRefine::command(int narg, char **arg)
     const std::string keyword = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "Illegal sph_soil/refine command: keyword {} needs a value", keyword);
     const char *value = arg[iarg + 1];
-    if (keyword == "separation") {
-      splitter.separation = utils::numeric(FLERR, value, false, lmp);
-      if (!(splitter.separation > 0.0 && splitter.separation < 1.0))
-        error->all(FLERR, "Illegal sph_soil/refine separation {}: must be in (0, 1)", splitter.separation);
-    } else if (keyword == "smoothing") {
-      splitter.smoothing_ratio = utils::numeric(FLERR, value, false, lmp);
-      if (!(splitter.smoothing_ratio > 0.0 && splitter.smoothing_ratio < 1.0))
-        error->all(FLERR, "Illegal sph_soil/refine smoothing {}: must be in (0, 1)", splitter.smoothing_ratio);
-    } else if (keyword == "dref") {
-      splitter.reference_spacing = utils::numeric(FLERR, value, false, lmp);
-      if (!(splitter.reference_spacing > 0.0))
-        error->all(FLERR, "Illegal sph_soil/refine dref {}: must be > 0", splitter.reference_spacing);
+    if (splitter.parse_keyword(STYLE, keyword, value)) {
+      continue;
     } else if (keyword == "region") {
       region = SphSoilCompat::find_region(domain, value);
       if (!region) error->all(FLERR, "sph_soil/refine region {} does not exist", value);
     } else {
-      error->all(FLERR, "Illegal sph_soil/refine keyword {} (allowed: separation, smoothing, dref, region)", keyword);
+      error->all(FLERR, "Illegal sph_soil/refine keyword {} (allowed: {}, region)", keyword,
+                 SPHSoilSplitter::KEYWORDS);
     }
   }
   if (force->pair == nullptr || !force->pair_match("sph/soil", 1))

@@ -11,6 +11,8 @@
 #include "error.h"
 #include "group.h"
 #include "input.h"
+#include "soil_split.h"
+#include "sph_soil_input.h"
 #include "utils.h"
 #include "variable.h"
 
@@ -60,9 +62,8 @@ void SPHSoilSet::command(int narg, char **arg)
       iarg += 2;
     } else if (keyword == "level") {
       need(1);
-      const int value = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (value < 0)
-        error->all(FLERR, "Illegal sph_soil/set level {}: the refinement level must be >= 0", value);
+      const int value = SphSoilInput::integer(FLERR, lmp, "sph_soil/set level", arg[iarg + 1], 0,
+                                              SPHSoil::MAX_LEVEL);
       for (int i = 0; i < nlocal; i++)
         if (mask[i] & groupbit) avec->level[i] = value;
       iarg += 2;
@@ -80,16 +81,12 @@ void SPHSoilSet::command(int narg, char **arg)
       // sigma_v = rho0 g (v - v_surface) below the surface (0 above), sigma_h = K0 sigma_v;
       // v is y in 2D and z in 3D
       need(4);
-      const double surface = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      const double density = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-      const double gravity = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
-      const double k0 = utils::numeric(FLERR, arg[iarg + 4], false, lmp);
-      if (!(density > 0.0))
-        error->all(FLERR, "Illegal sph_soil/set geostatic density {}: must be > 0", density);
-      if (!(gravity >= 0.0))
-        error->all(FLERR, "Illegal sph_soil/set geostatic gravity {}: must be >= 0", gravity);
-      if (!(k0 >= 0.0 && k0 <= 10.0))
-        error->all(FLERR, "Illegal sph_soil/set geostatic K0 {}: must be in [0, 10]", k0);
+      using namespace SphSoilInput;
+      const double surface = number(FLERR, lmp, "sph_soil/set geostatic surface", arg[iarg + 1]);
+      const double density = number(FLERR, lmp, "sph_soil/set geostatic density", arg[iarg + 2], above(0.0));
+      const double gravity = number(FLERR, lmp, "sph_soil/set geostatic gravity", arg[iarg + 3], at_least(0.0));
+      const double k0 = number(FLERR, lmp, "sph_soil/set geostatic K0", arg[iarg + 4],
+                               between(0.0, 10.0, false, false));
       const int vertical = domain->dimension == 2 ? 1 : 2;
       double **x = atom->x;
       for (int i = 0; i < nlocal; i++) {
@@ -104,8 +101,8 @@ void SPHSoilSet::command(int narg, char **arg)
       need(6);
       double point[3], normal[3];
       for (int k = 0; k < 3; k++) {
-        point[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
-        normal[k] = utils::numeric(FLERR, arg[iarg + 4 + k], false, lmp);
+        point[k] = SphSoilInput::number(FLERR, lmp, "sph_soil/set wall point", arg[iarg + 1 + k]);
+        normal[k] = SphSoilInput::number(FLERR, lmp, "sph_soil/set wall normal", arg[iarg + 4 + k]);
       }
       const double norm = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
       if (!(norm > 0.0))
@@ -159,7 +156,7 @@ SPHSoilSet::Value SPHSoilSet::parse_value(const std::string &keyword, const char
       error->all(FLERR, "Variable {} for sph_soil/set {} must be equal-style or atom-style",
                  value.variable, keyword);
   } else {
-    value.constant = utils::numeric(FLERR, arg, false, lmp);
+    value.constant = SphSoilInput::number(FLERR, lmp, "sph_soil/set " + keyword, arg);
   }
   return value;
 }

@@ -4,6 +4,8 @@
 
 #include "sph_soil_splitter.h"
 
+#include "sph_soil_input.h"
+
 #include "atom.h"
 #include "atom_vec_sph_soil.h"
 #include "comm.h"
@@ -32,6 +34,24 @@ constexpr int NSTATE = 13;
 SPHSoilSplitter::SPHSoilSplitter(LAMMPS *lmp, const std::string &who_) :
     Pointers(lmp), who(who_), avec(nullptr), pair(nullptr)
 {
+}
+
+/* ---------------------------------------------------------------------- */
+
+bool SPHSoilSplitter::parse_keyword(const std::string &command, const std::string &keyword,
+                                    const char *value)
+{
+  using namespace SphSoilInput;
+  const std::string what = command + " " + keyword;
+  if (keyword == "separation")
+    separation = number(FLERR, lmp, what, value, between(0.0, 1.0, true, true));
+  else if (keyword == "smoothing")
+    smoothing_ratio = number(FLERR, lmp, what, value, between(0.0, 1.0, true, true));
+  else if (keyword == "dref")
+    reference_spacing = number(FLERR, lmp, what, value, above(0.0));
+  else
+    return false;
+  return true;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -30,6 +30,11 @@ class SPHSoilSplitter : protected Pointers {
   // reference density, d_p = (m_p / rho_0)^(1/D) (which halves with each split)
   double reference_spacing = 0.0;
 
+  // Read a keyword of the split pattern (separation, smoothing, dref) for `command` (as the
+  // user types it, for error messages); false if `keyword` is not one of them.
+  bool parse_keyword(const std::string &command, const std::string &keyword, const char *value);
+  static constexpr const char *KEYWORDS = "separation, smoothing, dref";
+
   // the pair style and atom style this run uses (call at init)
   void init();
   // spacing d_p of owned particle i

@@ -1,0 +1,100 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package for LAMMPS: numbers from input arguments.
+
+   Every number a command of the package reads goes through number() or
+   integer(): LAMMPS's own parser (its syntax check and message), then a
+   range check whose error names the command and keyword, the value as
+   typed and the allowed range. LAMMPS's parser accepts "1e400", which
+   becomes infinity and passes any "x > 0" test: number() rejects every
+   non-finite value.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_SOIL_INPUT_H
+#define LMP_SPH_SOIL_INPUT_H
+
+#include "error.h"
+#include "lammps.h"
+#include "utils.h"
+
+#include <cmath>
+#include <string>
+
+namespace LAMMPS_NS {
+namespace SphSoilInput {
+
+// An allowed range of a number: a bound on either side (or none), open or closed.
+struct Range {
+  double lo = -HUGE_VAL, hi = HUGE_VAL;
+  bool lo_open = false, hi_open = false;
+
+  bool contains(double value) const
+  {
+    return std::isfinite(value) && (lo_open ? value > lo : value >= lo) &&
+        (hi_open ? value < hi : value <= hi);
+  }
+  // "> 0", ">= 0", "in (0, 1)", "in [0, 10]"; empty for any finite number
+  std::string describe() const
+  {
+    const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
+    if (has_lo && has_hi)
+      return fmt::format("in {}{}, {}{}", lo_open ? "(" : "[", lo, hi, hi_open ? ")" : "]");
+    if (has_lo) return fmt::format("{} {}", lo_open ? ">" : ">=", lo);
+    if (has_hi) return fmt::format("{} {}", hi_open ? "<" : "<=", hi);
+    return "";
+  }
+};
+
+inline Range any() { return Range(); }
+inline Range above(double lo)
+{
+  Range r;
+  r.lo = lo;
+  r.lo_open = true;
+  return r;
+}
+inline Range at_least(double lo)
+{
+  Range r;
+  r.lo = lo;
+  return r;
+}
+inline Range between(double lo, double hi, bool lo_open, bool hi_open)
+{
+  Range r;
+  r.lo = lo;
+  r.hi = hi;
+  r.lo_open = lo_open;
+  r.hi_open = hi_open;
+  return r;
+}
+
+// The number in `text` for `what` (the command and keyword, e.g. "pair_style sph/soil alpha"):
+// finite and in `range`, else an error (on all ranks: input arguments are the same everywhere).
+inline double number(const char *file, int line, LAMMPS *lmp, const std::string &what,
+                     const char *text, const Range &range = Range())
+{
+  const double value = utils::numeric(file, line, text, false, lmp);
+  if (!range.contains(value)) {
+    const std::string allowed = range.describe();
+    if (std::isfinite(value))
+      lmp->error->all(file, line, "Illegal {} {}: must be {}", what, text, allowed);
+    lmp->error->all(file, line, "Illegal {} {}: must be a finite number{}{}", what, text,
+                    allowed.empty() ? "" : " ", allowed);
+  }
+  return value;
+}
+
+// The integer in `text` for `what`, in [lo, hi].
+inline int integer(const char *file, int line, LAMMPS *lmp, const std::string &what,
+                   const char *text, int lo, int hi)
+{
+  const int value = utils::inumeric(file, line, text, false, lmp);
+  if (value < lo || value > hi)
+    lmp->error->all(file, line, "Illegal {} {}: must be in {} to {}", what, text, lo, hi);
+  return value;
+}
+
+}    // namespace SphSoilInput
+}    // namespace LAMMPS_NS
+
+#endif
