@@ -365,6 +365,8 @@ TEST_F(Refinement, WallParticlesCannotBeRefined)
     command("create_atoms 1 box");
     command("set region bottom type 2");
     command("sph_soil/set all mass 0.265 h 0.012 density 2650");
+    command("group floor type 2");
+    command("sph_soil/set floor wall 0.0 0.02 0.0 0.0 1.0 0.0");
     command("pair_style sph/soil");
     command(SOIL);
     command("pair_coeff 2 2 wall");

@@ -14,6 +14,7 @@
 #include "pair_sph_soil.h"
 #include "soil_constitutive.h"
 #include "sph_soil_input.h"
+#include "sph_soil_offenders.h"
 #include "update.h"
 #include "utils.h"
 
@@ -182,7 +183,8 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
     model_of_type[atom->type[i]]->return_to_admissible(avec->stress[i]);
     // the positions only (a non-finite velocity makes them non-finite): what LAMMPS checks
     // before the next neighbour list; the whole state is checked after the corrector
-    if (!std::isfinite(x[i][0] + x[i][1] + x[i][2]) && first_unstable < 0) first_unstable = i;
+    if (!std::isfinite(x[i][0] + x[i][1] + x[i][2]) && lower_id(i, first_unstable))
+      first_unstable = i;
   }
   stop_if_unstable(first_unstable);
 }
@@ -218,7 +220,7 @@ void FixSPHSoil::final_integrate()
       stress_rate[k] = new_rate[k];
     }
     if (model->return_to_admissible(stress)) yielded++;
-    if (first_unstable < 0 && unstable(i)) first_unstable = i;
+    if (unstable(i) && lower_id(i, first_unstable)) first_unstable = i;
   }
   yielded_count = yielded;
   stop_if_unstable(first_unstable);
@@ -237,30 +239,23 @@ bool FixSPHSoil::unstable(int i) const
   return !(std::isfinite(sum) && atom->rho[i] > 0.0);
 }
 
-// Collective: every rank learns the lowest ID of an unstable particle, so that the error is
-// raised on all ranks and reaches the screen and the log (an error on one rank would reach
-// only that rank's screen). Called after the predictor, before LAMMPS's own checks of the
+// Collective (every rank raises the error, which so reaches the screen and the log, whichever
+// rank owns the particle). Called after the predictor, before LAMMPS's own checks of the
 // coordinates at the next neighbour-list build, and after the corrector.
 void FixSPHSoil::stop_if_unstable(int first_unstable)
 {
-  struct {
-    double id;
-    int rank;
-  } mine = {first_unstable >= 0 ? (double) atom->tag[first_unstable] : BIG, comm->me}, lowest;
-  MPI_Allreduce(&mine, &lowest, 1, MPI_DOUBLE_INT, MPI_MINLOC, world);
-  if (lowest.id >= BIG) return;
-  double state[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
-  if (lowest.rank == comm->me) {
-    const int i = first_unstable;
-    state[0] = atom->rho[i];
-    for (int a = 0; a < 3; a++) state[1 + a] = atom->v[i][a];
-    state[4] = avec->stress[i][0];
-  }
-  MPI_Bcast(state, 5, MPI_DOUBLE, lowest.rank, world);
+  const auto unstable = SphSoilOffenders::reduce_offenders(
+      lmp, first_unstable >= 0 ? 1 : 0, first_unstable, [&](int i, double *values) {
+        values[0] = atom->rho[i];
+        for (int a = 0; a < 3; a++) values[1 + a] = atom->v[i][a];
+        values[4] = avec->stress[i][0];
+      });
+  if (!unstable) return;
+  const double *s = unstable.values;
   error->all(FLERR,
              "Fix sph/soil: particle {} became unstable at step {} (density {}, velocity {} {} "
              "{}, stress xx {}); reduce the timestep (or the cfl value)",
-             (tagint) lowest.id, update->ntimestep, state[0], state[1], state[2], state[3], state[4]);
+             unstable.first, update->ntimestep, s[0], s[1], s[2], s[3], s[4]);
 }
 
 /* ---------------------------------------------------------------------- */

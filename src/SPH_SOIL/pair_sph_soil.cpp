@@ -16,6 +16,7 @@
 #include "soil_kernel.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_input.h"
+#include "sph_soil_offenders.h"
 #include "utils.h"
 
 #include <cmath>
@@ -31,7 +32,8 @@ using SPHSoil::SoilMaterial;
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1), free_slip(false),
     drucker_prager_fit(SPHSoil::DruckerPragerFit::associated),
-    sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), nmax_packed(0),
+    sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), warned_density(false),
+    warned_spacing(false), nmax_packed(0),
     packed(nullptr), sums(nullptr)
 {
   single_enable = 0;
@@ -141,7 +143,9 @@ void PairSPHSoil::coeff(int narg, char **arg)
   }
 
   if (strcmp(arg[0], "*") != 0 || strcmp(arg[1], "*") != 0)
-    error->all(FLERR, "Incorrect args for pair_coeff sph/soil: a material file needs '* *'");
+    error->all(FLERR, "Incorrect args for pair_coeff sph/soil: unknown material kind '{}' for "
+                      "types {} {} (allowed: soil, wall; a material file takes '* * file name1 ... "
+                      "name{}')", arg[2], arg[0], arg[1], ntypes);
   if (narg != 3 + ntypes)
     error->all(FLERR, "Incorrect args for pair_coeff sph/soil: a material file needs one name (or "
                       "NULL) per atom type, {} expected, {} given", ntypes, narg - 3);
@@ -227,25 +231,22 @@ void PairSPHSoil::init_style()
   // the cutoff follows the largest smoothing length; every particle needs h > 0
   const int nlocal = atom->nlocal;
   const int *type = atom->type;
-  double local_max = 0.0;
-  tagint bad = MAXTAGINT;
-  for (int i = 0; i < nlocal; i++) {
-    if (!type_set[type[i]]) continue;
-    const double h = avec->smoothing_length[i];
-    if (!(h > 0.0)) bad = MIN(bad, atom->tag[i]);
-    local_max = MAX(local_max, h);
-  }
-  tagint firstbad;
-  MPI_Allreduce(&bad, &firstbad, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (firstbad != MAXTAGINT)
+  const double *h = avec->smoothing_length;
+  const auto no_h = SphSoilOffenders::find_offenders(
+      lmp, [&](int i) { return type_set[type[i]] && !(h[i] > 0.0); }, [](int, double *) {});
+  if (no_h)
     error->all(FLERR, "Pair sph/soil: atom {} has smoothing length h <= 0; set it with "
-                      "'sph_soil/set <group> h <value>'", firstbad);
+                      "'sph_soil/set <group> h <value>'", no_h.first);
+  double local_max = 0.0;
+  for (int i = 0; i < nlocal; i++)
+    if (type_set[type[i]]) local_max = MAX(local_max, h[i]);
   MPI_Allreduce(&local_max, &max_h, 1, MPI_DOUBLE, MPI_MAX, world);
   if (max_h <= 0.0) error->all(FLERR, "Pair sph/soil: no particle with a material and h > 0");
 
   // every type has a material here (init_one stops otherwise): a plain flag for the pair loop
   type_is_wall.assign(atom->ntypes + 1, 0);
   for (int t = 1; t <= atom->ntypes; t++) type_is_wall[t] = materials[t].wall ? 1 : 0;
+  check_particles();
 
   // one constitutive model per soil type, built from its material (the factory decides which)
   models.clear();
@@ -256,6 +257,101 @@ void PairSPHSoil::init_style()
 
   // a half list: each pair once, shares to both particles (see eval())
   SphSoilCompat::request_half_neighbor_list(neighbor, this, instance_me);
+}
+
+/* ----------------------------------------------------------------------
+   the particles' state against their materials: wall particles need their plane (an error
+   otherwise); a density far from the material's or an h far from the spacing that mass and
+   density give is legal but most likely a set-up mistake (a warning, once)
+------------------------------------------------------------------------- */
+
+void PairSPHSoil::check_particles()
+{
+  using SphSoilOffenders::find_offenders;
+  const int *type = atom->type;
+  double **x = atom->x;
+  double **normal = avec->wall_normal;
+  const double *distance = avec->wall_distance, *h = avec->smoothing_length;
+  const double *rho = atom->rho, *rmass = atom->rmass;
+  auto position = [&](int i, double *values) {
+    for (int a = 0; a < 3; a++) values[a] = x[i][a];
+    values[3] = type[i];
+  };
+
+  const auto no_plane = find_offenders(
+      lmp,
+      [&](int i) {
+        return type_set[type[i]] && type_is_wall[type[i]] &&
+            normal[i][0] * normal[i][0] + normal[i][1] * normal[i][1] + normal[i][2] * normal[i][2] == 0.0;
+      },
+      position);
+  if (no_plane)
+    error->all(FLERR, "Pair sph/soil: {} wall particle(s) have no wall plane (atom {} of type {} at "
+                      "{} {} {}); set it with 'sph_soil/set <group> wall px py pz nx ny nz'",
+               no_plane.count, no_plane.first, (int) no_plane.values[3], no_plane.values[0],
+               no_plane.values[1], no_plane.values[2]);
+  // behind the plane: distance >= 0 (a round-off margin for particles on the plane)
+  const auto in_front = find_offenders(
+      lmp,
+      [&](int i) { return type_set[type[i]] && type_is_wall[type[i]] && distance[i] < -1.0e-9 * h[i]; },
+      [&](int i, double *values) {
+        values[0] = distance[i];
+        for (int a = 0; a < 3; a++) values[1 + a] = normal[i][a];
+      });
+  if (in_front)
+    error->all(FLERR, "Pair sph/soil: {} wall particle(s) lie in front of their wall plane (atom "
+                      "{}: distance {} along the normal {} {} {}); the normal given to "
+                      "'sph_soil/set <group> wall' must point into the soil, with the wall "
+                      "particles behind the plane", in_front.count, in_front.first,
+               in_front.values[0], in_front.values[1], in_front.values[2], in_front.values[3]);
+
+  // Warnings. Density within 10% of rho0: compression under soil's own weight changes it by
+  // p/K, well below 1%. h/d within [0.9, 3], d = (m/rho)^(1/D) the spacing that mass and
+  // density give: below, a particle has too few neighbours for SPH (none below 0.5), above,
+  // the kernel smears over many spacings; runs use 1.2 to 2.
+  if (!warned_density) {
+    const auto off = find_offenders(
+        lmp,
+        [&](int i) {
+          return type_set[type[i]] && !type_is_wall[type[i]] &&
+              std::fabs(rho[i] / materials[type[i]].density - 1.0) > 0.1;
+        },
+        [&](int i, double *values) {
+          values[0] = rho[i];
+          values[1] = materials[type[i]].density;
+        });
+    if (off && comm->me == 0)
+      error->warning(FLERR, "Pair sph/soil: {} soil particle(s) have a density more than 10% away "
+                            "from their material's rho0 (atom {}: {} against {}); is "
+                            "'sph_soil/set <group> density' missing?", off.count, off.first,
+                     off.values[0], off.values[1]);
+    warned_density = true;
+  }
+  if (!warned_spacing) {
+    const double dimension = domain->dimension;
+    auto ratio = [&](int i) { return h[i] / std::pow(rmass[i] / rho[i], 1.0 / dimension); };
+    const auto off = find_offenders(
+        lmp,
+        [&](int i) {
+          if (!type_set[type[i]]) return false;
+          const double r = ratio(i);
+          return !(r >= 0.9 && r <= 3.0);
+        },
+        [&](int i, double *values) {
+          values[0] = ratio(i);
+          values[1] = h[i];
+          values[2] = rmass[i];
+          values[3] = rho[i];
+        });
+    if (off && comm->me == 0)
+      error->warning(FLERR, "Pair sph/soil: {} particle(s) have h/d outside [0.9, 3], with d = "
+                            "(m/rho)^(1/{}) the spacing that their mass and density give (atom {}: "
+                            "h/d = {:.3g} from h {}, m {}, rho {}); usual is 1.2 to 2: check "
+                            "'sph_soil/set ... mass ... density ... h'", off.count,
+                     domain->dimension, off.first, off.values[0], off.values[1], off.values[2],
+                     off.values[3]);
+    warned_spacing = true;
+  }
 }
 
 /* ---------------------------------------------------------------------- */

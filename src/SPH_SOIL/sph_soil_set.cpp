@@ -13,6 +13,7 @@
 #include "input.h"
 #include "soil_split.h"
 #include "sph_soil_input.h"
+#include "sph_soil_offenders.h"
 #include "utils.h"
 #include "variable.h"
 
@@ -185,23 +186,14 @@ void SPHSoilSet::check_range(const std::string &keyword, const std::vector<doubl
                              double lo, bool lo_open, const char *allowed, int groupbit)
 {
   const int *mask = atom->mask;
-  // report the offending atom with the smallest ID, identically on every rank
-  tagint badid = MAXTAGINT;
-  double badvalue = 0.0;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    const double v = values[i];
-    const bool ok = std::isfinite(v) && (lo_open ? v > lo : v >= lo);
-    if (!ok && atom->tag[i] < badid) {
-      badid = atom->tag[i];
-      badvalue = v;
-    }
-  }
-  tagint firstbad = MAXTAGINT;
-  MPI_Allreduce(&badid, &firstbad, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (firstbad == MAXTAGINT) return;
-  double mine = (badid == firstbad) ? badvalue : 0.0, reported = 0.0;
-  MPI_Allreduce(&mine, &reported, 1, MPI_DOUBLE, MPI_SUM, world);
-  error->all(FLERR, "Illegal sph_soil/set {} value {} for atom {}: must be {}", keyword, reported,
-             firstbad, allowed);
+  const auto bad = SphSoilOffenders::find_offenders(
+      lmp,
+      [&](int i) {
+        const double v = values[i];
+        return (mask[i] & groupbit) && !(std::isfinite(v) && (lo_open ? v > lo : v >= lo));
+      },
+      [&](int i, double *out) { out[0] = values[i]; });
+  if (bad)
+    error->all(FLERR, "Illegal sph_soil/set {} value {} for atom {}: must be {}", keyword,
+               bad.values[0], bad.first, allowed);
 }

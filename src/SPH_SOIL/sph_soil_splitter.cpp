@@ -5,6 +5,7 @@
 #include "sph_soil_splitter.h"
 
 #include "sph_soil_input.h"
+#include "sph_soil_offenders.h"
 
 #include "atom.h"
 #include "atom_vec_sph_soil.h"
@@ -191,6 +192,28 @@ bigint SPHSoilSplitter::split(const std::vector<int> &parents, NeighList *list)
       interpolate(i, xd, list, &state[((size_t) n * count + k) * NSTATE]);
     }
   }
+
+  // a daughter beyond a fixed ('f') boundary would be lost at the next reneighbouring
+  std::vector<int> outside(atom->nlocal, -1);    // per parent: its first daughter outside
+  for (int n = 0; n < nparents; n++)
+    for (int k = 0; k < count && outside[parents[n]] < 0; k++) {
+      const double *xd = &position[((size_t) n * count + k) * 3];
+      for (int a = 0; a < dimension; a++)
+        if ((domain->boundary[a][0] == 1 && xd[a] < domain->boxlo[a]) ||
+            (domain->boundary[a][1] == 1 && xd[a] >= domain->boxhi[a]))
+          outside[parents[n]] = n * count + k;
+    }
+  const auto lost = SphSoilOffenders::find_offenders(
+      lmp, [&](int i) { return outside[i] >= 0; },
+      [&](int i, double *values) {
+        for (int a = 0; a < 3; a++) values[a] = position[(size_t) outside[i] * 3 + a];
+      });
+  if (lost)
+    error->all(FLERR, "{}: splitting {} particle(s) would put daughters outside the box through a "
+                      "fixed boundary (atom {}: a daughter at {} {} {}); keep the split particles "
+                      "separation * d_p / 2 away from fixed boundaries (e.g. with a region), or "
+                      "make the boundary shrink-wrapped", who, lost.count, lost.first,
+               lost.values[0], lost.values[1], lost.values[2]);
 
   // 2. the daughters: the parent's slot becomes daughter 0, the others are copies of the
   //    parent appended to the owned atoms (overwriting the ghosts, which are rebuilt later)
