@@ -10,6 +10,7 @@
 #include "error.h"
 #include "memory.h"
 #include "force.h"
+#include "group.h"
 #include "modify.h"
 #include "pair_sph_soil.h"
 #include "soil_constitutive.h"
@@ -57,6 +58,15 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
   }
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   if (!avec) error->all(FLERR, "Fix sph/soil requires atom_style sph/soil");
+  if (max_dt > 0.0 && cfl == 0.0)
+    error->all(FLERR, "Illegal fix sph/soil dtmax {}: it bounds the adaptive time step, which needs "
+                      "'cfl C' too", max_dt);
+  // the largest C_cfl measured stable with a fixed step (see setup()): the documented range
+  // of cfl goes higher for a smooth, slow flow, but most runs will not survive it
+  if (cfl > stable_cfl && comm->me == 0)
+    error->warning(FLERR, "Fix sph/soil cfl {}: above {}, the largest value measured stable (a "
+                          "geostatic column); expect the run to go unstable, 0.1 to 0.2 is usual",
+                   cfl, stable_cfl);
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -90,6 +100,30 @@ void FixSPHSoil::init()
 
   model_of_type.assign(atom->ntypes + 1, nullptr);
   for (int type = 1; type <= atom->ntypes; type++) model_of_type[type] = pair->model(type);
+
+  // one integrator per particle: two fixes sph/soil over the same particles would each
+  // advance them, a step of 2 dt
+  const int *mask = atom->mask;
+  for (int ifix = 0; ifix < modify->nfix; ifix++) {
+    const Fix *other = modify->fix[ifix];
+    if (other == this || strcmp(other->style, "sph/soil") != 0) continue;
+    const int otherbit = other->groupbit;
+    const auto twice = SphSoilOffenders::find_offenders(
+        lmp, [&](int i) { return (mask[i] & groupbit) && (mask[i] & otherbit); },
+        [](int, double *) {});
+    if (twice)
+      error->all(FLERR, "Fix sph/soil {} and {} both integrate {} particle(s) (e.g. atom {}); "
+                        "integrate each particle with one fix", id, other->id, twice.count,
+                 twice.first);
+  }
+  // a group without soil particles is integrated by no one (wall particles never move)
+  bigint soil = 0, all_soil = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (integrated(i)) soil++;
+  MPI_Allreduce(&soil, &all_soil, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all_soil == 0 && comm->me == 0)
+    error->warning(FLERR, "Fix sph/soil {}: group {} holds no soil particle (wall particles are "
+                          "never integrated): this fix moves nothing", id, group->names[igroup]);
 
   // the rates of the first force evaluation use vest: start it at v (ghosts, made later
   // at setup, take it from their owners)

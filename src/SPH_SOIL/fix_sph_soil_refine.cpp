@@ -22,14 +22,18 @@
 #include "sph_soil_compat.h"
 #include "sph_soil_input.h"
 #include "sph_soil_splitter.h"
+#include "math_const.h"
 #include "update.h"
 #include "utils.h"
 
+#include <cmath>
 #include <cstring>
+#include <unistd.h>
 #include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+using MathConst::MY_PI;
 
 namespace {
 const char *const STYLE = "Fix sph/soil/refine";
@@ -136,8 +140,82 @@ void FixSPHSoilRefine::init_list(int, NeighList *ptr)
 
 void FixSPHSoilRefine::setup(int)
 {
-  if (!parameters_reported) report_parameters();
+  if (!parameters_reported) {
+    report_parameters();
+    report_capacity();
+  }
   parameters_reported = true;
+}
+
+/* ----------------------------------------------------------------------
+   what refinement down to maxlevel can cost. A particle at level L has the spacing d_0 / 2^L
+   but sees the whole neighbour cutoff, 2 max(h) + skin, which follows the coarsest particles:
+   its neighbours grow as 2^(D L). Warn (once) when they exceed LAMMPS's limit per atom (the
+   run would stop with "Neighbor list overflow"), and when the group split down to maxlevel
+   would not fit in the memory of the nodes of the run.
+------------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::report_capacity()
+{
+  const int dimension = domain->dimension;
+  const double daughters = SPHSoil::daughter_count(dimension);
+  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  double finest = HUGE_VAL, worst_count = 0.0;    // as doubles: 4^30 fits
+  bigint members = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const int levels_left = MAX(0, maxlevel - avec->level[i]);
+    finest = MIN(finest, splitter->spacing(i) / std::pow(2.0, levels_left));
+    worst_count += std::pow(daughters, levels_left);
+    members++;
+  }
+  double finest_all, worst_all;
+  bigint members_all;
+  MPI_Allreduce(&finest, &finest_all, 1, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(&worst_count, &worst_all, 1, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(&members, &members_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (members_all == 0 || !std::isfinite(finest_all)) return;
+  worst_all += (double) (atom->natoms - members_all);
+
+  const double cutoff = force->pair->cutforce + neighbor->skin;
+  const double sphere = dimension == 2 ? MY_PI * cutoff * cutoff : 4.0 / 3.0 * MY_PI * cutoff * cutoff * cutoff;
+  const double neighbours = sphere / std::pow(finest_all, dimension);
+  // the pair style's half list holds about half of them
+  if (0.5 * neighbours > neighbor->oneatom && comm->me == 0)
+    error->warning(FLERR, "Fix sph/soil/refine: particles refined to level {} (spacing {:.3g}) "
+                          "would have about {:.0f} neighbours within the cutoff {:.3g} (2 max(h) + "
+                          "skin), above LAMMPS's limit of {} per atom: the run stops with 'Neighbor "
+                          "list overflow' if particles get there; lower maxlevel or raise "
+                          "'neigh_modify one'", maxlevel, finest_all, 0.5 * neighbours, cutoff,
+                   neighbor->oneatom);
+
+  // bytes per particle: the per-atom arrays of LAMMPS and of the fixes as they are now, and
+  // at the finest level the neighbour lists (an int per entry: the pair's half list and this
+  // fix's full list)
+  double per_atom = (atom->memory_usage() + modify->memory_usage()) / MAX(atom->nmax, 1);
+  double per_atom_max;
+  MPI_Allreduce(&per_atom, &per_atom_max, 1, MPI_DOUBLE, MPI_MAX, world);
+  per_atom_max += sizeof(int) * 1.5 * neighbours;
+  const double needed = worst_all * per_atom_max;
+  // the memory of the nodes: each node's first rank counts its node's
+  MPI_Comm node;
+  MPI_Comm_split_type(world, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  int node_rank;
+  MPI_Comm_rank(node, &node_rank);
+  MPI_Comm_free(&node);
+  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
+  double mine[2] = {0.0, 0.0}, nodes[2];
+  if (node_rank == 0 && pages > 0 && page_size > 0) {
+    mine[0] = (double) pages * (double) page_size;
+    mine[1] = 1.0;
+  }
+  MPI_Allreduce(mine, nodes, 2, MPI_DOUBLE, MPI_SUM, world);
+  if (nodes[0] > 0.0 && needed > nodes[0] && comm->me == 0)
+    error->warning(FLERR, "Fix sph/soil/refine: the group split down to level {} would hold {:.3g} "
+                          "particles, about {:.3g} GB at {:.0f} bytes each, more than the {:.3g} GB "
+                          "of the {} node(s) of this run; lower maxlevel or limit the refinement "
+                          "to a region", maxlevel, worst_all, needed / 1e9, per_atom_max,
+                   nodes[0] / 1e9, (int) nodes[1]);
 }
 
 /* ----------------------------------------------------------------------

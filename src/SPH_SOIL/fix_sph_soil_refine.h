@@ -52,6 +52,7 @@ class FixSPHSoilRefine : public Fix {
   bigint total_split;         // since the fix was defined (kept in restart files)
 
   void report_parameters();
+  void report_capacity();
 };
 
 }    // namespace LAMMPS_NS

@@ -74,6 +74,17 @@ void SPHSoilSet::command(int narg, char **arg)
       for (int k = 0; k < AtomVecSPHSoil::NVOIGT; k++) {
         auto values = evaluate(parse_value(keyword, arg[iarg + 1 + k]));
         check_range(keyword, values, -HUGE_VAL, true, "finite", groupbit);
+        // plane strain: no xz, yz shear (the pair sums never produce the rates that would
+        // change them, so a value set here would stay, unbalanced)
+        if (domain->dimension == 2 && k >= 4) {
+          const auto shear = SphSoilOffenders::find_offenders(
+              lmp, [&](int i) { return (mask[i] & groupbit) && values[i] != 0.0; },
+              [&](int i, double *out) { out[0] = values[i]; });
+          if (shear)
+            error->all(FLERR, "Illegal sph_soil/set {}: the {} component must be 0 in 2D (plane "
+                              "strain), got {} for atom {}", keyword, k == 4 ? "xz" : "yz",
+                       shear.values[0], shear.first);
+        }
         for (int i = 0; i < nlocal; i++)
           if (mask[i] & groupbit) target[i][k] = values[i];
       }
