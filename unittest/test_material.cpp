@@ -50,7 +50,7 @@ TEST(MaterialFile, RejectsBadEntriesNamingLineAndParameter)
   EXPECT_FALSE(parse_material_file("a soil -1 0.7e6 0.3 19.8 0 0\n", list, error));
   EXPECT_THAT(error, HasSubstr("density rho0 = -1 must be finite and > 0"));
   EXPECT_FALSE(parse_material_file("a soil 2650 abc 0.3 19.8 0 0\n", list, error));
-  EXPECT_THAT(error, HasSubstr("'abc' is not a number"));
+  EXPECT_THAT(error, HasSubstr("'abc' is not a finite number"));
   EXPECT_FALSE(parse_material_file("a rock 1 2 3\n", list, error));
   EXPECT_THAT(error, HasSubstr("unknown kind 'rock' (allowed: soil, wall)"));
   EXPECT_FALSE(parse_material_file("w wall\nw wall\n", list, error));

@@ -291,20 +291,6 @@ TEST_F(Refinement, RestartAfterSplitsContinuesIdentically)
   }
 }
 
-TEST_F(Refinement, FixedTimestepTooLargeAfterSplitIsAnError)
-{
-  patch(2, 10, false);
-  HIDE_OUTPUT([&] {
-    command("sph_soil/set all strain 0.3 0 0 0 0 0");
-    command("fix integrate all sph/soil");
-    command("fix refine all sph/soil/refine 1");
-    command("timestep 1.0e-4");    // stable limit before the split: 0.2 * 0.012 / 20.7 = 1.16e-4
-  });
-  EXPECT_LAMMPS_ERROR(".*Fix sph/soil/refine: after splitting at step 1 the timestep 0.0001 exceeds "
-                      "the stability limit.*use 'cfl 0.1' in fix sph/soil.*",
-                      command("run 2 post no"));
-}
-
 TEST_F(Refinement, UnstableParametersAreReported)
 {
   patch(2, 6, false);
@@ -320,78 +306,3 @@ TEST_F(Refinement, UnstableParametersAreReported)
                                          "= 1.0 (unstable (Cond. 1 2))"));
 }
 
-TEST_F(Refinement, BadInput)
-{
-  patch(2, 6, false);
-  HIDE_OUTPUT([&] {
-    command("fix integrate all sph/soil");
-    command("region inner block 1 3 1 3 INF INF");
-  });
-  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine separation 0: must be in \\(0, 1\\).*",
-                      command("fix r all sph/soil/refine 10 separation 0"));
-  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine separation 1: must be in \\(0, 1\\).*",
-                      command("fix r all sph/soil/refine 10 separation 1"));
-  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine smoothing 1.5: must be in \\(0, 1\\).*",
-                      command("fix r all sph/soil/refine 10 smoothing 1.5"));
-  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine N 0: must be >= 1.*",
-                      command("fix r all sph/soil/refine 0"));
-  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine maxlevel 0: must be in 1 to 30.*",
-                      command("fix r all sph/soil/refine 10 maxlevel 0"));
-  EXPECT_LAMMPS_ERROR(".*Fix sph/soil/refine region nowhere does not exist.*",
-                      command("fix r all sph/soil/refine 10 region nowhere"));
-  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine keyword ratio \\(allowed: threshold, separation, "
-                      "smoothing, dref, maxlevel, region\\).*",
-                      command("fix r all sph/soil/refine 10 ratio 2"));
-  EXPECT_LAMMPS_ERROR(".*Illegal sph_soil/refine separation 1.2: must be in \\(0, 1\\).*",
-                      command("sph_soil/refine all separation 1.2"));
-  EXPECT_LAMMPS_ERROR(".*Illegal sph_soil/refine smoothing -0.5: must be in \\(0, 1\\).*",
-                      command("sph_soil/refine all smoothing -0.5"));
-  EXPECT_LAMMPS_ERROR(".*sph_soil/refine region nowhere does not exist.*",
-                      command("sph_soil/refine all region nowhere"));
-  EXPECT_LAMMPS_ERROR(".*Could not find sph_soil/refine group ID nogroup.*",
-                      command("sph_soil/refine nogroup"));
-}
-
-TEST_F(Refinement, WallParticlesCannotBeRefined)
-{
-  HIDE_OUTPUT([&] {
-    command("dimension 2");
-    command("boundary p p p");
-    command("atom_style sph/soil");
-    command("lattice sq 0.01 origin 0.5 0.5 0.0");
-    command("region box block 0 6 0 6 -0.5 0.5");
-    command("create_box 2 box");
-    command("region bottom block INF INF 0 2 INF INF");
-    command("create_atoms 1 box");
-    command("set region bottom type 2");
-    command("sph_soil/set all mass 0.265 h 0.012 density 2650");
-    command("group floor type 2");
-    command("sph_soil/set floor wall 0.0 0.02 0.0 0.0 1.0 0.0");
-    command("pair_style sph/soil");
-    command(SOIL);
-    command("pair_coeff 2 2 wall");
-    command("group soil type 1");
-    command("fix integrate soil sph/soil");
-    command("timestep 1e-5");
-    command("fix refine all sph/soil/refine 10");
-  });
-  EXPECT_LAMMPS_ERROR(".*Fix sph/soil/refine: group all contains 12 wall particles \\(e.g. type 2\\); "
-                      "refine soil particles only.*",
-                      command("run 0 post no"));
-  HIDE_OUTPUT([&] { command("unfix refine"); });
-  EXPECT_LAMMPS_ERROR(".*sph_soil/refine: group all contains 12 wall particles; refine soil particles only.*",
-                      command("sph_soil/refine all"));
-}
-
-TEST_F(Refinement, RequiresTheSoilAtomStyle)
-{
-  HIDE_OUTPUT([&] {
-    command("atom_style atomic");
-    command("region box block 0 1 0 1 0 1");
-    command("create_box 1 box");
-  });
-  EXPECT_LAMMPS_ERROR(".*Fix sph/soil/refine requires atom_style sph/soil.*",
-                      command("fix r all sph/soil/refine 10"));
-  EXPECT_LAMMPS_ERROR(".*sph_soil/refine command requires atom_style sph/soil.*",
-                      command("sph_soil/refine all"));
-}

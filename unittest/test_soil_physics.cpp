@@ -315,73 +315,6 @@ TEST_F(SoilPhysics, GeostaticColumnStaysAtRest)
   EXPECT_NEAR(slope, 1850 * 9.81, 0.03 * 1850 * 9.81);
 }
 
-TEST_F(SoilPhysics, BadPairInput)
-{
-  HIDE_OUTPUT([&] {
-    command("dimension 2");
-    command("atom_style sph/soil");
-    command("region box block 0 1 0 1 -0.5 0.5");
-    command("create_box 2 box");
-    command("pair_style sph/soil");
-  });
-  EXPECT_LAMMPS_ERROR(".*pair_coeff sph/soil: material of type\\(s\\) 1: 'soil' needs 6 parameters "
-                      "\\(rho0 K nu phi psi c\\), got 5.*",
-                      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0"));
-  EXPECT_LAMMPS_ERROR(".*bulk modulus K = -1 must be finite and > 0.*", command("pair_coeff 1 1 soil 2650 -1 0.3 19.8 0 0"));
-  EXPECT_LAMMPS_ERROR(".*Poisson ratio nu = 0.5 must be in \\(-1, 0.5\\).*",
-                      command("pair_coeff 1 1 soil 2650 0.7e6 0.5 19.8 0 0"));
-  EXPECT_LAMMPS_ERROR(".*Poisson ratio nu = -1 must be in \\(-1, 0.5\\).*",
-                      command("pair_coeff 1 1 soil 2650 0.7e6 -1 19.8 0 0"));
-  EXPECT_LAMMPS_ERROR(".*friction angle phi = 90 must be in \\[0, 90\\) degrees.*",
-                      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 90 0 0"));
-  EXPECT_LAMMPS_ERROR(".*friction angle phi = -5 must be in \\[0, 90\\) degrees.*",
-                      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 -5 0 0"));
-  EXPECT_LAMMPS_ERROR(".*both type arguments must be the same \\(got 1 2\\).*",
-                      command("pair_coeff 1 2 soil 2650 0.7e6 0.3 19.8 0 0"));
-  EXPECT_LAMMPS_ERROR(".*'wall' takes no parameters, got 1.*", command("pair_coeff 2 2 wall 3"));
-  EXPECT_LAMMPS_ERROR(".*a material file needs one name \\(or NULL\\) per atom type, 2 expected, 1 given.*",
-                      command("pair_coeff * * bui2008.soil sand"));
-  EXPECT_LAMMPS_ERROR(".*material granite for atom type 1 is not in file bui2008.soil.*",
-                      command("pair_coeff * * bui2008.soil granite wall"));
-  EXPECT_LAMMPS_ERROR(".*Cannot open material file nosuchfile.soil for pair_coeff sph/soil.*",
-                      command("pair_coeff * * nosuchfile.soil sand wall"));
-  EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil keyword gamma \\(allowed: alpha, beta, wall, fit\\).*",
-                      command("pair_style sph/soil gamma 1"));
-  EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil alpha -1: must be >= 0.*",
-                      command("pair_style sph/soil alpha -1"));
-  EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil wall sticky: must be noslip or freeslip.*",
-                      command("pair_style sph/soil wall sticky"));
-  EXPECT_LAMMPS_ERROR(".*Illegal pair_style sph/soil fit tresca: must be associated or nonassociated.*",
-                      command("pair_style sph/soil fit tresca"));
-}
-
-TEST_F(SoilPhysics, BadRunSetups)
-{
-  HIDE_OUTPUT([&] {
-    command("dimension 2");
-    command("atom_style sph/soil");
-    command("lattice sq 0.01");
-    command("region box block 0 10 0 10 -0.5 0.5");
-    command("create_box 1 box");
-    command("create_atoms 1 box");
-    command("pair_style sph/soil");
-    command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
-    command("fix integrate all sph/soil");
-  });
-  EXPECT_LAMMPS_ERROR(".*Pair sph/soil: atom 1 has smoothing length h <= 0; set it with "
-                      "'sph_soil/set <group> h <value>'.*",
-                      command("run 0 post no"));
-  HIDE_OUTPUT([&] {
-    command("sph_soil/set all h 0.012 density 2650 mass 0.265");
-    command("timestep 1.0e-3");
-  });
-  EXPECT_LAMMPS_ERROR(".*Fix sph/soil: timestep 0.001 exceeds the stability limit .* = 0.2 \\* "
-                      "min\\(h\\) / c_p; use a smaller timestep or 'cfl 0.1'.*",
-                      command("run 0 post no"));
-  EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil cfl 2: must be in \\(0, 1\\].*",
-                      command("fix bad all sph/soil cfl 2"));
-}
-
 // A run that goes unstable stops at once and names a particle and the step, rather than
 // carrying NaN on. Here one particle's density of 1e-300 makes its stress/rho^2 infinite.
 // The check is collective: the error is raised on every rank, whichever owns the particle.
@@ -397,18 +330,6 @@ TEST_F(SoilPhysics, UnstableRunStopsNamingParticleAndStep)
   EXPECT_LAMMPS_ERROR(".*Fix sph/soil: particle [0-9]+ became unstable at step 1 \\(density .*\\); "
                       "reduce the timestep \\(or the cfl value\\).*",
                       command("run 10 post no"));
-}
-
-TEST_F(SoilPhysics, IntegratingAnotherAtomStyleIsAnError)
-{
-  HIDE_OUTPUT([&] {
-    command("atom_style atomic");
-    command("region box block 0 1 0 1 0 1");
-    command("create_box 1 box");
-  });
-  EXPECT_LAMMPS_ERROR(".*Fix sph/soil requires atom_style sph/soil.*", command("fix f all sph/soil"));
-  EXPECT_LAMMPS_ERROR(".*Compute sph/soil/atom requires atom_style sph/soil.*",
-                      command("compute c all sph/soil/atom"));
 }
 
 // pair_style ... fit nonassociated reaches the model the integrator uses; a repeated

@@ -80,7 +80,7 @@ bool SPHSoil::material_from_words(const std::string &name, const std::vector<std
   double values[6];
   for (int k = 0; k < 6; k++)
     if (!to_number(words[k + 1], values[k])) {
-      error = "material " + name + ": '" + words[k + 1] + "' is not a number";
+      error = "material " + name + ": '" + words[k + 1] + "' is not a finite number";
       return false;
     }
   material.density = values[0];

@@ -28,7 +28,7 @@ void SPHSoilSet::command(int narg, char **arg)
 {
   if (domain->box_exist == 0)
     error->all(FLERR, "sph_soil/set command before simulation box is defined");
-  if (narg < 3) error->all(FLERR, "Illegal sph_soil/set command: expected 'sph_soil/set group-ID keyword value ...'");
+  if (narg < 2) error->all(FLERR, "Illegal sph_soil/set command: expected 'sph_soil/set group-ID keyword value ...'");
   auto avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   if (!avec) error->all(FLERR, "sph_soil/set command requires atom_style sph/soil");
 

@@ -210,7 +210,7 @@ bigint SPHSoilSplitter::split(const std::vector<int> &parents, NeighList *list)
       });
   if (lost)
     error->all(FLERR, "{}: splitting {} particle(s) would put daughters outside the box through a "
-                      "fixed boundary (atom {}: a daughter at {} {} {}); keep the split particles "
+                      "fixed boundary (atom {}: a daughter at {:.6g} {:.6g} {:.6g}); keep the split particles "
                       "separation * d_p / 2 away from fixed boundaries (e.g. with a region), or "
                       "make the boundary shrink-wrapped", who, lost.count, lost.first,
                lost.values[0], lost.values[1], lost.values[2]);

@@ -1,0 +1,461 @@
+// The package's bad-input suite: every style, command, keyword, material file and data file
+// format of SPH_SOIL given a wrong or suspicious input, each case asserting the exact error or
+// warning text. Registered at 1 and 2 ranks: the errors are collective (raised on every rank)
+// except those of data files, which the rank that reads the atom raises (1 rank only).
+#include "sph_soil_testing.h"
+
+#include <fstream>
+#include <regex>
+
+using namespace LAMMPS_NS;
+using namespace SphSoilTesting;
+
+namespace {
+
+struct BadInput {
+  std::string name;                  // the test's name
+  std::string setup;                 // a set-up of the fixture, see prepare()
+  std::vector<std::string> before;   // commands after the set-up
+  std::string command;               // the command that must stop (or warn)
+  std::string message;               // the exact text of the error (or warning)
+  bool warning = false;              // a warning: the command succeeds
+  bool one_rank = false;             // an error of one rank (error->one): 1 rank only
+  // where LAMMPS itself rejects the input first, or words its message differently, in
+  // another release: the exact text of that message
+  std::string lammps_message = "";
+};
+
+// a material file for the file cases
+const char *const FILES[][2] = {
+    {"good.soil", "sand soil 1850 1.5e6 0.3 45 0 0\nrock wall\n"},
+    {"short.soil", "# a comment\nsand soil 1850 1.5e6 0.3 45 0\n"},
+    {"twice.soil", "sand soil 1850 1.5e6 0.3 45 0 0\nsand wall\n"},
+    {"empty.soil", "# nothing but comments\n\n"},
+    {"kind.soil", "sand clay 1850 1.5e6 0.3 45 0 0\n"},
+    {"word.soil", "sand soil 1850 1.5e6 0.3 forty-five 0 0\n"},
+};
+
+// a data file with one atom; `atom` is its Atoms line, `velocity` its Velocities line
+std::string data_file(const std::string &atom, const std::string &velocity = "")
+{
+  std::string text = "bad data file\n\n1 atoms\n1 atom types\n\n0 1 xlo xhi\n0 1 ylo yhi\n"
+                     "-0.5 0.5 zlo zhi\n\nAtoms # sph/soil\n\n" + atom + "\n";
+  if (!velocity.empty()) text += "\nVelocities\n\n" + velocity + "\n";
+  return text;
+}
+
+std::string escape(const std::string &text)
+{
+  static const std::regex special(R"([.^$|()\[\]{}*+?\\])");
+  return std::regex_replace(text, special, R"(\$&)");
+}
+
+const std::string SOIL = "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0";
+
+std::vector<BadInput> cases()
+{
+  std::vector<BadInput> c;
+  auto error = [&](std::string name, std::string setup, std::vector<std::string> before,
+                   std::string command, std::string message) {
+    c.push_back({name, setup, before, command, message, false, false});
+  };
+  auto warning = [&](std::string name, std::string setup, std::vector<std::string> before,
+                     std::string command, std::string message) {
+    c.push_back({name, setup, before, command, message, true, false});
+  };
+  auto data = [&](std::string name, std::string atom, std::string velocity, std::string message) {
+    c.push_back({name, "data", {"write bad.data " + data_file(atom, velocity)}, "read_data bad.data",
+                 message, false, true});
+  };
+  // a number out of the double range: ours, or LAMMPS's own message for `text`
+  auto out_of_range = [&](std::string name, std::string setup, std::vector<std::string> before,
+                          std::string command, std::string message, std::string text) {
+    c.push_back({name, setup, before, command, message, false, false,
+                 "Floating point number " + text + " in input script or data file is out of range"});
+  };
+
+  // ---- atom_style sph/soil
+  error("AtomStyleArguments", "none", {}, "atom_style sph/soil extra",
+        "Illegal atom_style sph/soil command: it takes no arguments, got 'extra'");
+
+  // ---- sph_soil/set
+  error("SetBeforeBox", "none", {}, "sph_soil/set all h 1.0",
+        "sph_soil/set command before simulation box is defined");
+  error("SetWithoutAtomStyle", "none", {"region box block 0 1 0 1 0 1", "create_box 1 box"},
+        "sph_soil/set all h 1.0", "sph_soil/set command requires atom_style sph/soil");
+  error("SetTooFewArguments", "patch", {}, "sph_soil/set all",
+        "Illegal sph_soil/set command: expected 'sph_soil/set group-ID keyword value ...'");
+  error("SetUnknownGroup", "patch", {}, "sph_soil/set nosuchgroup h 1",
+        "Could not find sph_soil/set group ID nosuchgroup");
+  error("SetUnknownKeyword", "patch", {}, "sph_soil/set all colour 3",
+        "Illegal sph_soil/set command: unknown keyword colour (allowed: mass, h, density, level, "
+        "stress, strain, geostatic, wall, nowall)");
+  error("SetMissingValue", "patch", {}, "sph_soil/set all h 0.01 density",
+        "Illegal sph_soil/set command: keyword density needs 1 value(s)");
+  error("SetMassZero", "patch", {}, "sph_soil/set all mass 0",
+        "Illegal sph_soil/set mass value 0 for atom 1: must be > 0");
+  out_of_range("SetMassInfinite", "patch", {}, "sph_soil/set all mass 1e400",
+        "Illegal sph_soil/set mass 1e400: must be a finite number", "1e400");
+  error("SetHNegative", "patch", {}, "sph_soil/set all h -0.5",
+        "Illegal sph_soil/set h value -0.5 for atom 1: must be > 0");
+  error("SetDensityFromAtomVariable", "patch", {"variable bad atom 1.0-0.01*id"},
+        "sph_soil/set all density v_bad", "Illegal sph_soil/set density value 0 for atom 100: must be > 0");
+  error("SetDensityVariableInfinite", "patch", {"variable big equal 1e300*1e300"},
+        "sph_soil/set all density v_big", "Illegal sph_soil/set density value inf for atom 1: must be > 0");
+  error("SetUnknownVariable", "patch", {}, "sph_soil/set all h v_nosuchvar",
+        "Variable name nosuchvar for sph_soil/set h does not exist");
+  error("SetStringVariable", "patch", {"variable word string abc"}, "sph_soil/set all h v_word",
+        "Variable word for sph_soil/set h must be equal-style or atom-style");
+  error("SetLevelNegative", "patch", {}, "sph_soil/set all level -1",
+        "Illegal sph_soil/set level -1: must be in 0 to 30");
+  error("SetLevelTooDeep", "patch", {}, "sph_soil/set all level 31",
+        "Illegal sph_soil/set level 31: must be in 0 to 30");
+  error("SetStressTooFewValues", "patch", {}, "sph_soil/set all stress 1 2 3",
+        "Illegal sph_soil/set command: keyword stress needs 6 value(s)");
+  out_of_range("SetStressInfinite", "patch", {}, "sph_soil/set all stress -1e400 0 0 0 0 0",
+        "Illegal sph_soil/set stress -1e400: must be a finite number", "-1e400");
+  error("SetStressOutOfPlaneShearIn2D", "patch", {}, "sph_soil/set all stress -1 -1 -1 0 5 0",
+        "Illegal sph_soil/set stress: the xz component must be 0 in 2D (plane strain), got 5 for atom 1");
+  error("SetStrainOutOfPlaneShearIn2D", "patch", {}, "sph_soil/set all strain 0 0 0 0 0 0.1",
+        "Illegal sph_soil/set strain: the yz component must be 0 in 2D (plane strain), got 0.1 for atom 1");
+  error("SetGeostaticK0", "patch", {}, "sph_soil/set all geostatic 0.3 2000 10 -1",
+        "Illegal sph_soil/set geostatic K0 -1: must be in [0, 10]");
+  error("SetGeostaticDensity", "patch", {}, "sph_soil/set all geostatic 0.3 0 10 0.5",
+        "Illegal sph_soil/set geostatic density 0: must be > 0");
+  error("SetGeostaticGravity", "patch", {}, "sph_soil/set all geostatic 0.3 2000 -9.81 0.5",
+        "Illegal sph_soil/set geostatic gravity -9.81: must be >= 0");
+  out_of_range("SetGeostaticSurfaceInfinite", "patch", {}, "sph_soil/set all geostatic 1e400 2000 10 0.5",
+        "Illegal sph_soil/set geostatic surface 1e400: must be a finite number", "1e400");
+  error("SetWallNormalZero", "patch", {}, "sph_soil/set all wall 0 0 0 0 0 0",
+        "Illegal sph_soil/set wall: the normal (0 0 0) must be non-zero");
+  error("SetWallNormalOutOfPlane", "patch", {}, "sph_soil/set all wall 0 0 0 0 1 1",
+        "Illegal sph_soil/set wall: the normal must lie in the xy plane in 2D");
+  out_of_range("SetWallPointInfinite", "patch", {}, "sph_soil/set all wall 0 1e999 0 0 1 0",
+        "Illegal sph_soil/set wall point 1e999: must be a finite number", "1e999");
+
+  // ---- pair_style sph/soil
+  error("PairUnknownKeyword", "patch", {}, "pair_style sph/soil gamma 1",
+        "Illegal pair_style sph/soil keyword gamma (allowed: alpha, beta, wall, fit)");
+  error("PairKeywordWithoutValue", "patch", {}, "pair_style sph/soil alpha",
+        "Illegal pair_style sph/soil command: keyword alpha needs a value");
+  error("PairAlphaNegative", "patch", {}, "pair_style sph/soil alpha -1",
+        "Illegal pair_style sph/soil alpha -1: must be >= 0");
+  out_of_range("PairAlphaInfinite", "patch", {}, "pair_style sph/soil alpha 1e400",
+        "Illegal pair_style sph/soil alpha 1e400: must be a finite number >= 0", "1e400");
+  error("PairBetaNegative", "patch", {}, "pair_style sph/soil beta -0.5",
+        "Illegal pair_style sph/soil beta -0.5: must be >= 0");
+  error("PairWall", "patch", {}, "pair_style sph/soil wall sticky",
+        "Illegal pair_style sph/soil wall sticky: must be noslip or freeslip");
+  error("PairFit", "patch", {}, "pair_style sph/soil fit tresca",
+        "Illegal pair_style sph/soil fit tresca: must be associated or nonassociated");
+
+  // ---- pair_coeff: materials on the command line and in files
+  error("CoeffTooFewArguments", "patch", {}, "pair_coeff 1 1",
+        "Incorrect args for pair_coeff sph/soil: expected 'I I soil rho0 K nu phi psi c', 'I I wall' "
+        "or '* * file name1 ... name2'");
+  error("CoeffSoilParameterCount", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0",
+        "Incorrect args for pair_coeff sph/soil: material of type(s) 1: 'soil' needs 6 parameters "
+        "(rho0 K nu phi psi c), got 5");
+  error("CoeffDensity", "patch", {}, "pair_coeff 1 1 soil 0 0.7e6 0.3 19.8 0 0",
+        "material of type(s) 1: density rho0 = 0 must be finite and > 0");
+  error("CoeffBulkModulus", "patch", {}, "pair_coeff 1 1 soil 2650 -1 0.3 19.8 0 0",
+        "material of type(s) 1: bulk modulus K = -1 must be finite and > 0");
+  error("CoeffPoissonRatioHigh", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.5 19.8 0 0",
+        "material of type(s) 1: Poisson ratio nu = 0.5 must be in (-1, 0.5)");
+  error("CoeffPoissonRatioLow", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 -1 19.8 0 0",
+        "material of type(s) 1: Poisson ratio nu = -1 must be in (-1, 0.5)");
+  error("CoeffFrictionAngle", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 90 0 0",
+        "material of type(s) 1: friction angle phi = 90 must be in [0, 90) degrees");
+  error("CoeffFrictionAngleNegative", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 -5 0 0",
+        "material of type(s) 1: friction angle phi = -5 must be in [0, 90) degrees");
+  error("CoeffDilatancyAngle", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 25 0",
+        "material of type(s) 1: dilatancy angle psi = 25 must be in [0, phi = 19.8]");
+  error("CoeffCohesion", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 -1",
+        "material of type(s) 1: cohesion c = -1 must be finite and >= 0");
+  error("CoeffInfinite", "patch", {}, "pair_coeff 1 1 soil 2650 1e400 0.3 19.8 0 0",
+        "material of type(s) 1: '1e400' is not a finite number");
+  error("CoeffWallWithParameters", "patch", {}, "pair_coeff 2 2 wall 3",
+        "material of type(s) 2: 'wall' takes no parameters, got 1");
+  error("CoeffUnknownKind", "patch", {}, "pair_coeff 1 1 clay 2650 0.7e6 0.3 19.8 0 0",
+        "Incorrect args for pair_coeff sph/soil: unknown material kind 'clay' for types 1 1 "
+        "(allowed: soil, wall; a material file takes '* * file name1 ... name2')");
+  error("CoeffMixedTypes", "patch", {}, "pair_coeff 1 2 soil 2650 0.7e6 0.3 19.8 0 0",
+        "a material belongs to atom types, so both type arguments must be the same (got 1 2)");
+  error("CoeffTypeOutOfRange", "patch", {}, "pair_coeff 3 3 wall", "Numeric index 3 is out of bounds (1-2)");
+  error("FileNameCount", "patch", {}, "pair_coeff * * good.soil sand",
+        "a material file needs one name (or NULL) per atom type, 2 expected, 1 given");
+  error("FileMissing", "patch", {}, "pair_coeff * * nosuchfile.soil sand rock",
+        "Cannot open material file nosuchfile.soil for pair_coeff sph/soil");
+  error("FileNameNotInFile", "patch", {}, "pair_coeff * * good.soil granite rock",
+        "pair_coeff sph/soil: material granite for atom type 1 is not in file good.soil");
+  error("FileParameterCount", "patch", {}, "pair_coeff * * short.soil sand NULL",
+        "Invalid material file short.soil for pair_coeff sph/soil: line 2: material sand: 'soil' needs "
+        "6 parameters (rho0 K nu phi psi c), got 5");
+  error("FileDefinedTwice", "patch", {}, "pair_coeff * * twice.soil sand sand",
+        "Invalid material file twice.soil for pair_coeff sph/soil: line 2: material sand is defined twice");
+  error("FileEmpty", "patch", {}, "pair_coeff * * empty.soil sand sand",
+        "Invalid material file empty.soil for pair_coeff sph/soil: no material defined");
+  error("FileUnknownKind", "patch", {}, "pair_coeff * * kind.soil sand sand",
+        "Invalid material file kind.soil for pair_coeff sph/soil: line 1: material sand: unknown kind "
+        "'clay' (allowed: soil, wall)");
+  error("FileNotANumber", "patch", {}, "pair_coeff * * word.soil sand sand",
+        "Invalid material file word.soil for pair_coeff sph/soil: line 1: material sand: 'forty-five' "
+        "is not a finite number");
+
+  // ---- set-ups that a run rejects
+  error("RunWithoutH", "box", {"create_atoms 1 box", "sph_soil/set all mass 0.265 density 2650",
+                               "pair_style sph/soil", SOIL, "pair_coeff 2 2 wall",
+                               "fix integrate all sph/soil"},
+        "run 0 post no",
+        "Pair sph/soil: atom 1 has smoothing length h <= 0; set it with 'sph_soil/set <group> h <value>'");
+  error("RunTypeWithoutMaterial", "patch", {SOIL, "fix integrate all sph/soil"}, "run 0 post no",
+        "All pair coeffs are not set");
+  error("RunTimestepTooLarge", "patch", {SOIL, "pair_coeff 2 2 wall", "fix integrate all sph/soil",
+                                         "timestep 1e-3"},
+        "run 0 post no",
+        "Fix sph/soil: timestep 0.001 exceeds the stability limit 0.000116184 = 0.2 * min(h) / c_p; "
+        "use a smaller timestep or 'cfl 0.1'");
+  error("RunWallWithoutPlane", "walls", {"sph_soil/set floor nowall"}, "run 0 post no",
+        "Pair sph/soil: 20 wall particle(s) have no wall plane (atom 1 of type 2 at 0.005 0.005 0); "
+        "set it with 'sph_soil/set <group> wall px py pz nx ny nz'");
+  error("RunWallPlaneBehindSoil", "walls", {"sph_soil/set floor wall 0 0.02 0 0 -1 0"},
+        "run 0 post no",
+        "Pair sph/soil: 20 wall particle(s) lie in front of their wall plane (atom 1: distance -0.015 "
+        "along the normal 0 -1 0); the normal given to 'sph_soil/set <group> wall' must point into "
+        "the soil, with the wall particles behind the plane");
+  error("RunTwoIntegrators", "walls", {"fix again soil sph/soil"}, "run 0 post no",
+        "Fix sph/soil integrate and again both integrate 80 particle(s) (e.g. atom 21); integrate each "
+        "particle with one fix");
+  error("RunWithoutPairStyle", "box", {"create_atoms 1 single 0.5 0.5 0", "fix integrate all sph/soil"},
+        "run 0 post no", "Fix sph/soil requires pair_style sph/soil");
+
+  // ---- fix sph/soil
+  error("FixWithoutAtomStyle", "none", {"region box block 0 1 0 1 0 1", "create_box 1 box"},
+        "fix f all sph/soil", "Fix sph/soil requires atom_style sph/soil");
+  error("FixUnknownKeyword", "patch", {}, "fix f all sph/soil courant 0.1",
+        "Illegal fix sph/soil keyword courant (allowed: cfl, dtmax)");
+  error("FixKeywordWithoutValue", "patch", {}, "fix f all sph/soil cfl",
+        "Illegal fix sph/soil command: keyword cfl needs a value");
+  error("FixCflTooLarge", "patch", {}, "fix f all sph/soil cfl 2",
+        "Illegal fix sph/soil cfl 2: must be in (0, 1]");
+  out_of_range("FixCflInfinite", "patch", {}, "fix f all sph/soil cfl 1e999",
+        "Illegal fix sph/soil cfl 1e999: must be a finite number in (0, 1]", "1e999");
+  error("FixDtmaxNegative", "patch", {}, "fix f all sph/soil cfl 0.1 dtmax -1",
+        "Illegal fix sph/soil dtmax -1: must be > 0");
+  error("FixDtmaxWithoutCfl", "patch", {}, "fix f all sph/soil dtmax 1e-5",
+        "Illegal fix sph/soil dtmax 1e-05: it bounds the adaptive time step, which needs 'cfl C' too");
+  warning("FixCflAboveMeasuredStable", "patch", {}, "fix f all sph/soil cfl 0.5",
+          "Fix sph/soil cfl 0.5: above 0.2, the largest value measured stable (a geostatic column); "
+          "expect the run to go unstable, 0.1 to 0.2 is usual");
+  warning("FixGroupWithoutSoil", "walls", {"unfix integrate", "fix walls floor sph/soil"},
+          "run 0 post no",
+          "Fix sph/soil walls: group floor holds no soil particle (wall particles are never "
+          "integrated): this fix moves nothing");
+
+  // ---- warnings of the pair style at a run
+  warning("DensityFarFromReference", "walls", {"sph_soil/set soil density 2000 mass 0.2"},
+          "run 0 post no",
+          "Pair sph/soil: 80 soil particle(s) have a density more than 10% away from their material's "
+          "rho0 (atom 21: 2000 against 2650); is 'sph_soil/set <group> density' missing?");
+  warning("SmoothingLengthFarFromSpacing", "walls", {"sph_soil/set soil mass 1"}, "run 0 post no",
+          "Pair sph/soil: 80 particle(s) have h/d outside [0.9, 3], with d = (m/rho)^(1/2) the spacing "
+          "that their mass and density give (atom 21: h/d = 0.618 from h 0.012, m 1, rho 2650); usual "
+          "is 1.2 to 2: check 'sph_soil/set ... mass ... density ... h'");
+
+  // ---- fix sph/soil/refine
+  error("RefineWithoutAtomStyle", "none", {"region box block 0 1 0 1 0 1", "create_box 1 box"},
+        "fix r all sph/soil/refine 10", "Fix sph/soil/refine requires atom_style sph/soil");
+  error("RefineTooFewArguments", "patch", {}, "fix r all sph/soil/refine",
+        "Illegal fix sph/soil/refine command: expected 'fix ID group sph/soil/refine N keyword value ...'");
+  error("RefineEveryZero", "patch", {}, "fix r all sph/soil/refine 0",
+        "Illegal fix sph/soil/refine N 0: must be >= 1");
+  error("RefineThresholdNegative", "patch", {}, "fix r all sph/soil/refine 10 threshold -1",
+        "Illegal fix sph/soil/refine threshold -1: must be >= 0");
+  out_of_range("RefineThresholdInfinite", "patch", {}, "fix r all sph/soil/refine 10 threshold 1e400",
+        "Illegal fix sph/soil/refine threshold 1e400: must be a finite number >= 0", "1e400");
+  error("RefineSeparation", "patch", {}, "fix r all sph/soil/refine 10 separation 1",
+        "Illegal fix sph/soil/refine separation 1: must be in (0, 1)");
+  error("RefineSeparationZero", "patch", {}, "fix r all sph/soil/refine 10 separation 0",
+        "Illegal fix sph/soil/refine separation 0: must be in (0, 1)");
+  error("RefineSmoothing", "patch", {}, "fix r all sph/soil/refine 10 smoothing 1.5",
+        "Illegal fix sph/soil/refine smoothing 1.5: must be in (0, 1)");
+  error("RefineDref", "patch", {}, "fix r all sph/soil/refine 10 dref 0",
+        "Illegal fix sph/soil/refine dref 0: must be > 0");
+  error("RefineMaxlevel", "patch", {}, "fix r all sph/soil/refine 10 maxlevel 31",
+        "Illegal fix sph/soil/refine maxlevel 31: must be in 1 to 30");
+  error("RefineMaxlevelZero", "patch", {}, "fix r all sph/soil/refine 10 maxlevel 0",
+        "Illegal fix sph/soil/refine maxlevel 0: must be in 1 to 30");
+  error("RefineTimestepTooLargeAfterSplit", "patch",
+        {SOIL, "pair_coeff 2 2 wall", "sph_soil/set all strain 0.3 0 0 0 0 0",
+         "fix integrate all sph/soil", "fix refine all sph/soil/refine 1", "timestep 1.0e-4"},
+        "run 2 post no",
+        "Fix sph/soil/refine: after splitting at step 1 the timestep 0.0001 exceeds the stability "
+        "limit 5.80921e-05 = 0.2 * min(h) / c_p; use 'cfl 0.1' in fix sph/soil (adaptive step) or a "
+        "timestep <= 5.80921e-05");
+  error("RefineRegion", "patch", {}, "fix r all sph/soil/refine 10 region nowhere",
+        "Fix sph/soil/refine region nowhere does not exist");
+  error("RefineUnknownKeyword", "patch", {}, "fix r all sph/soil/refine 10 ratio 2",
+        "Illegal fix sph/soil/refine keyword ratio (allowed: threshold, separation, smoothing, dref, "
+        "maxlevel, region)");
+  error("RefineKeywordWithoutValue", "patch", {}, "fix r all sph/soil/refine 10 threshold",
+        "Illegal fix sph/soil/refine command: keyword threshold needs a value");
+  error("RefineWithoutIntegrator", "walls", {"unfix integrate", "fix r soil sph/soil/refine 10"},
+        "run 0 post no", "Fix sph/soil/refine requires fix sph/soil");
+  error("RefineWallParticles", "walls", {"fix r all sph/soil/refine 10"}, "run 0 post no",
+        "Fix sph/soil/refine: group all contains 20 wall particles (e.g. type 2); refine soil "
+        "particles only");
+  warning("RefineUnstableParameters", "walls", {"fix r soil sph/soil/refine 10 separation 0.7"},
+          "run 0 post no",
+          "Fix sph/soil/refine: separation 0.7 and smoothing 0.5 (h/d = 1.2) are in the unstable "
+          "region for d_ij/d_ref = 1.0 (unstable (Cond. 2)): expect clumps and cracks under "
+          "compression; see doc/refinement_parameters.rst");
+  warning("RefineNeighbourOverflow", "walls", {"fix r soil sph/soil/refine 10 maxlevel 4"},
+          "run 0 post no",
+          "Fix sph/soil/refine: particles refined to level 4 (spacing 0.000625) would have about 2513 "
+          "neighbours within the cutoff 0.025 (2 max(h) + skin), above LAMMPS's limit of 2000 per atom: "
+          "the run stops with 'Neighbor list overflow' if particles get there; lower maxlevel or raise "
+          "'neigh_modify one'");
+
+  // ---- sph_soil/refine
+  error("StaticRefineBeforeBox", "none", {}, "sph_soil/refine all",
+        "sph_soil/refine command before simulation box is defined");
+  error("StaticRefineWithoutAtomStyle", "none", {"region box block 0 1 0 1 0 1", "create_box 1 box"},
+        "sph_soil/refine all", "sph_soil/refine command requires atom_style sph/soil");
+  error("StaticRefineUnknownGroup", "patch", {}, "sph_soil/refine nogroup",
+        "Could not find sph_soil/refine group ID nogroup");
+  error("StaticRefineSeparation", "patch", {}, "sph_soil/refine all separation 1.2",
+        "Illegal sph_soil/refine separation 1.2: must be in (0, 1)");
+  error("StaticRefineSmoothing", "patch", {}, "sph_soil/refine all smoothing -0.5",
+        "Illegal sph_soil/refine smoothing -0.5: must be in (0, 1)");
+  error("StaticRefineRegion", "patch", {}, "sph_soil/refine all region nowhere",
+        "sph_soil/refine region nowhere does not exist");
+  error("StaticRefineUnknownKeyword", "patch", {}, "sph_soil/refine all maxlevel 2",
+        "Illegal sph_soil/refine keyword maxlevel (allowed: separation, smoothing, dref, region)");
+  error("StaticRefineWithoutPairStyle", "box",
+        {"create_atoms 1 box", "sph_soil/set all mass 0.265 h 0.012 density 2650"}, "sph_soil/refine all",
+        "sph_soil/refine command requires pair_style sph/soil");
+  error("StaticRefineWallParticles", "walls", {}, "sph_soil/refine all",
+        "sph_soil/refine: group all contains 20 wall particles; refine soil particles only");
+  error("StaticRefineOutOfTheBox", "fixedbox", {}, "sph_soil/refine all separation 0.9",
+        "sph_soil/refine: splitting 19 particle(s) would put daughters outside the box through a fixed "
+        "boundary (atom 1: a daughter at -0.0045 -0.0045 0); keep the split particles separation * "
+        "d_p / 2 away from fixed boundaries (e.g. with a region), or make the boundary shrink-wrapped");
+
+  // ---- compute sph/soil/atom
+  error("ComputeWithoutAtomStyle", "none", {"region box block 0 1 0 1 0 1", "create_box 1 box"},
+        "compute c all sph/soil/atom", "Compute sph/soil/atom requires atom_style sph/soil");
+  error("ComputeUnknownValue", "patch", {}, "compute c all sph/soil/atom stress",
+        "Illegal compute sph/soil/atom value stress (allowed: sxx syy szz sxy sxz syz pressure sqrtJ2 "
+        "strain yielded density h level)");
+
+  // ---- data files (the rank that reads the atom raises the error)
+  data("DataMassNegative", "1 1 -1.0 0.1 1000 0 0.5 0.5 0", "",
+       "Invalid mass -1 of atom 1 in Atoms section of data file: must be finite and > 0");
+  c.push_back({"DataMassInfinite", "data",
+               {"write bad.data " + data_file("1 1 1e400 0.1 1000 0 0.5 0.5 0")}, "read_data bad.data",
+               "Invalid mass inf of atom 1 in Atoms section of data file: must be finite and > 0",
+               false, true, "Floating point number 1e400 in input script or data file is out of range"});
+  data("DataSmoothingLength", "1 1 1.0 -0.1 1000 0 0.5 0.5 0", "",
+       "Invalid smoothing length h -0.1 of atom 1 in Atoms section of data file: must be >= 0");
+  data("DataDensity", "1 1 1.0 0.1 0 0 0.5 0.5 0", "",
+       "Invalid density 0 of atom 1 in Atoms section of data file: must be > 0");
+  data("DataLevelNegative", "1 1 1.0 0.1 1000 -2 0.5 0.5 0", "",
+       "Invalid refinement level -2 of atom 1 in Atoms section of data file: must be in 0 to 30");
+  data("DataLevelTooDeep", "1 1 1.0 0.1 1000 31 0.5 0.5 0", "",
+       "Invalid refinement level 31 of atom 1 in Atoms section of data file: must be in 0 to 30");
+  c.push_back({"DataStressInfinite", "data",
+               {"write bad.data " + data_file("1 1 1.0 0.1 1000 0 0.5 0.5 0", "1 0 0 0 -1e400 0 0 0 0 0")},
+               "read_data bad.data",
+               "Invalid velocity or stress of atom 1 in Velocities section of data file: must be finite "
+               "(got velocity 0 0 0, stress -inf 0 0 0 0 0)",
+               false, true, "Floating point number -1e400 in input script or data file is out of range"});
+  c.push_back({"DataColumnCount", "data", {"write bad.data " + data_file("1 1 1.0 0.1 1000 0 0.5 0.5")},
+               "read_data bad.data", "Incorrect format in Atoms section of data file: 1 1 1.0 0.1 1000 0 "
+               "0.5 0.5", false, true, "Incorrect atom format in data file"});
+  return c;
+}
+
+class BadInputs : public LAMMPSTest, public ::testing::WithParamInterface<BadInput> {
+ protected:
+  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
+
+  // the fixture's set-ups:
+  //  none:     units si only
+  //  box:      2D, atom_style sph/soil, a box with 2 types, no atoms
+  //  patch:    + a periodic 10 x 10 lattice of soil (type 1, spacing 1 cm), mass, h, density,
+  //            pair_style sph/soil (no coefficients), material files in the working directory
+  //  walls:    + the bottom two rows wall particles (type 2, group floor, plane y = 0.02),
+  //            materials, fix integrate on the soil, a time step
+  //  fixedbox: the patch in a box with fixed boundaries, fully set up
+  //  data:     atom_style sph/soil
+  void prepare(const std::string &setup)
+  {
+    if (setup == "none") return;
+    if (setup == "data") return command("atom_style sph/soil");
+    command("dimension 2");
+    command(setup == "fixedbox" ? "boundary f f p" : "boundary p p p");
+    command("atom_style sph/soil");
+    command("atom_modify map array");
+    // (on the fixed box, lattice sites on its lower edges)
+    command(setup == "fixedbox" ? "lattice sq 0.01" : "lattice sq 0.01 origin 0.5 0.5 0.0");
+    command("region box block 0 10 0 10 -0.5 0.5");
+    command("create_box 2 box");
+    if (setup == "box") return;
+    command("create_atoms 1 box");
+    command("sph_soil/set all mass 0.265 h 0.012 density 2650");
+    command("pair_style sph/soil");
+    if (rank() == 0)
+      for (const auto &file : FILES) std::ofstream(file[0]) << file[1];
+    MPI_Barrier(MPI_COMM_WORLD);
+    if (setup == "patch") return;
+    command(SOIL);
+    command("pair_coeff 2 2 wall");
+    command("timestep 1e-5");
+    if (setup == "fixedbox") return;
+    command("region bottom block INF INF 0 2 INF INF");
+    command("set region bottom type 2");
+    command("group floor type 2");
+    command("group soil type 1");
+    command("sph_soil/set floor wall 0.0 0.02 0.0 0.0 1.0 0.0");
+    command("fix integrate soil sph/soil");
+  }
+
+  void run_before(const std::vector<std::string> &lines)
+  {
+    for (const auto &line : lines) {
+      if (line.compare(0, 6, "write ") == 0) {    // write FILE TEXT
+        const auto space = line.find(' ', 6);
+        if (rank() == 0) std::ofstream(line.substr(6, space - 6)) << line.substr(space + 1);
+        MPI_Barrier(MPI_COMM_WORLD);
+      } else {
+        command(line);
+      }
+    }
+  }
+};
+
+}    // namespace
+
+TEST_P(BadInputs, StopsOrWarnsWithTheExactMessage)
+{
+  const BadInput &c = GetParam();
+  if (c.one_rank && nprocs() > 1) GTEST_SKIP() << "an error of the rank that reads the atom";
+  HIDE_OUTPUT([&] {
+    prepare(c.setup);
+    run_before(c.before);
+  });
+  if (c.warning) {
+    ::testing::internal::CaptureStdout();
+    command(c.command);
+    const std::string output = ::testing::internal::GetCapturedStdout();
+    if (rank() == 0) EXPECT_THAT(output, ::testing::HasSubstr("WARNING: " + c.message));
+  } else if (c.lammps_message.empty()) {
+    EXPECT_LAMMPS_ERROR(".*" + escape(c.message) + ".*", command(c.command));
+  } else {
+    EXPECT_LAMMPS_ERROR(".*(" + escape(c.message) + "|" + escape(c.lammps_message) + ").*",
+                        command(c.command));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(SPHSoil, BadInputs, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<BadInput> &info) { return info.param.name; });
