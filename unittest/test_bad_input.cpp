@@ -262,6 +262,13 @@ std::vector<BadInput> cases()
           "that their mass and density give (atom 21: h/d = 0.618 from h 0.012, m 1, rho 2650); usual "
           "is 1.2 to 2: check 'sph_soil/set ... mass ... density ... h'");
 
+  warning("CoincidingParticles", "walls",
+          {"create_atoms 1 single 5.5 5.5 0.0", "group twice id 101",
+           "sph_soil/set twice mass 0.265 h 0.012 density 2650"},
+          "run 0 post no",
+          "Pair sph/soil: 1 pair(s) of particles closer than 1e-6 h (atoms 56 and 101 at 0.055 0.055 "
+          "0): particles at the same place, created or read twice?");
+
   // ---- fix sph/soil/refine
   error("RefineWithoutAtomStyle", "none", {"region box block 0 1 0 1 0 1", "create_box 1 box"},
         "fix r all sph/soil/refine 10", "Fix sph/soil/refine requires atom_style sph/soil");
@@ -445,9 +452,15 @@ TEST_P(BadInputs, StopsOrWarnsWithTheExactMessage)
     run_before(c.before);
   });
   if (c.warning) {
+    std::string thrown;
     ::testing::internal::CaptureStdout();
-    command(c.command);
+    try {
+      command(c.command);
+    } catch (LAMMPSException &e) {
+      thrown = e.what();
+    }
     const std::string output = ::testing::internal::GetCapturedStdout();
+    EXPECT_EQ(thrown, "") << "a warning was expected, not an error";
     if (rank() == 0) EXPECT_THAT(output, ::testing::HasSubstr("WARNING: " + c.message));
   } else if (c.lammps_message.empty()) {
     EXPECT_LAMMPS_ERROR(".*" + escape(c.message) + ".*", command(c.command));

@@ -33,7 +33,7 @@ PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1), free_slip(false),
     drucker_prager_fit(SPHSoil::DruckerPragerFit::associated),
     sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), warned_density(false),
-    warned_spacing(false), nmax_packed(0),
+    warned_spacing(false), warned_coinciding(false), nmax_packed(0),
     packed(nullptr), sums(nullptr)
 {
   single_enable = 0;
@@ -354,6 +354,46 @@ void PairSPHSoil::check_particles()
   }
 }
 
+/* ----------------------------------------------------------------------
+   particles at the same place (created twice, or read twice): legal, the sums stay finite
+   (the kernel gradient vanishes at r = 0), but most likely a mistake; warned once, at the
+   first force evaluation, when the neighbour list exists
+------------------------------------------------------------------------- */
+
+void PairSPHSoil::warn_coinciding()
+{
+  warned_coinciding = true;
+  double **x = atom->x;
+  const double *h = avec->smoothing_length;
+  const tagint *tag = atom->tag;
+  bigint pairs = 0;
+  int first = -1, partner = -1;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const double tolerance = 1.0e-6 * h[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = list->firstneigh[i][jj] & NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      if (dx * dx + dy * dy + dz * dz >= tolerance * tolerance) continue;
+      pairs++;
+      if (first < 0 || tag[i] < tag[first]) {
+        first = i;
+        partner = j;
+      }
+    }
+  }
+  const auto at_same_place = SphSoilOffenders::reduce_offenders(
+      lmp, pairs, first, [&](int i, double *values) {
+        values[0] = tag[partner];
+        for (int a = 0; a < 3; a++) values[1 + a] = x[i][a];
+      });
+  if (at_same_place && comm->me == 0)
+    error->warning(FLERR, "Pair sph/soil: {} pair(s) of particles closer than 1e-6 h (atoms {} and "
+                          "{} at {} {} {}): particles at the same place, created or read twice?",
+                   at_same_place.count, at_same_place.first, (tagint) at_same_place.values[0],
+                   at_same_place.values[1], at_same_place.values[2], at_same_place.values[3]);
+}
+
 /* ---------------------------------------------------------------------- */
 
 double PairSPHSoil::init_one(int i, int j)
@@ -398,6 +438,7 @@ void *PairSPHSoil::extract(const char *name, int &dim)
 void PairSPHSoil::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  if (!warned_coinciding) warn_coinciding();
   if (domain->dimension == 2) eval<2>();
   else eval<3>();
 }

@@ -57,8 +57,9 @@ class PairSPHSoil : public Pair {
   double max_h;                                    // largest smoothing length at init
   std::vector<std::unique_ptr<SPHSoil::ConstitutiveModel>> models;    // per atom type
   class AtomVecSPHSoil *avec;
-  bool warned_density, warned_spacing;    // the set-up warnings are given once
+  bool warned_density, warned_spacing, warned_coinciding;    // set-up warnings, given once
   void check_particles();
+  void warn_coinciding();
   // The pair loop's per-atom inputs, one row of PACKED doubles per owned and ghost atom:
   // position, velocity estimate, stress / rho^2 (Voigt), volume m / rho, mass, density, h
   enum { P_X = 0, P_V = 3, P_STRESS = 6, P_VOLUME = 12, P_MASS = 13, P_RHO = 14, P_H = 15,
