@@ -45,22 +45,7 @@ class SoilPhysics : public LAMMPSTest {
   void periodic_patch()
   {
     HIDE_OUTPUT([&] {
-      command("dimension 2");
-      command("boundary p p p");
-      command("atom_style sph/soil");
-      command("atom_modify map array");
-      command("lattice sq 0.01");
-      command("region box block 0 20 0 16 -0.5 0.5");
-      command("create_box 1 box");
-      command("create_atoms 1 box");
-      // a disordered lattice (atom IDs depend on the number of ranks, positions do not)
-      command("variable xnew atom x+0.001*sin(1299*x+7823*y)");
-      command("variable ynew atom y+0.001*sin(3711*x-4557*y)");
-      command("set group all x v_xnew y v_ynew");
-      command("variable sxx atom -2000.0-300.0*sin(300*x)");
-      command("variable syy atom -1500.0+200.0*cos(250*y)");
-      command("variable sxy atom 100.0*sin(200*(x+y))");
-      command("sph_soil/set all mass 0.265 h 0.012 density 2650 stress v_sxx v_syy v_sxx v_sxy 0 0");
+      for (const auto &line : periodic_patch_commands()) command(line);
       command("velocity all set v_vx NULL NULL units box");
     });
   }
