@@ -11,6 +11,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
 
 using namespace LAMMPS_NS;
 
@@ -53,6 +56,23 @@ const Property properties[] = {
 };
 constexpr int NPROPERTIES = sizeof(properties) / sizeof(properties[0]);
 
+// LAMMPS finds a per-atom array of an atom style through the address of its pointer, and the
+// base AtomVec destroys the arrays through these addresses. Under atom_style hybrid the hybrid
+// style does so only after it has deleted its sub-styles: pointers that were members of this
+// style would then be read from freed memory. They live in a block per Atom instead, which
+// outlives the style; the block is replaced (and the old one freed) when that Atom gets a new
+// sph/soil style, by which time the previous style and its hybrid are gone, and freed at exit.
+std::mutex arrays_mutex;
+std::map<const Atom *, std::unique_ptr<AtomVecSPHSoil::Arrays>> arrays_by_atom;
+
+AtomVecSPHSoil::Arrays *arrays_of(const Atom *atom)
+{
+  std::lock_guard<std::mutex> lock(arrays_mutex);
+  auto &block = arrays_by_atom[atom];
+  block.reset(new AtomVecSPHSoil::Arrays());
+  return block.get();
+}
+
 }    // namespace
 
 /* ---------------------------------------------------------------------- */
@@ -61,7 +81,7 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
     AtomVec(lmp), smoothing_length(nullptr), stress(nullptr), stress_rate(nullptr),
     total_strain(nullptr), strain_rate(nullptr), spin(nullptr), level(nullptr),
     wall_normal(nullptr), wall_distance(nullptr), rmass(nullptr), rho(nullptr), drho(nullptr),
-    vest(nullptr)
+    vest(nullptr), arrays(arrays_of(atom))
 {
   molecular = Atom::ATOMIC;
   mass_type = PER_ATOM;
@@ -74,15 +94,15 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   // read_restart and a second atom_style command re-create the AtomVec: an entry of the
   // previous instance then follows the new arrays
   using SphSoilCompat::set_peratom;
-  set_peratom(atom, H_NAME, &smoothing_length, Atom::DOUBLE, 0);
-  set_peratom(atom, STRESS_NAME, &stress, Atom::DOUBLE, NVOIGT);
-  set_peratom(atom, STRESS_RATE_NAME, &stress_rate, Atom::DOUBLE, NVOIGT);
-  set_peratom(atom, STRAIN_NAME, &total_strain, Atom::DOUBLE, NVOIGT);
-  set_peratom(atom, STRAIN_RATE_NAME, &strain_rate, Atom::DOUBLE, NVOIGT);
-  set_peratom(atom, SPIN_NAME, &spin, Atom::DOUBLE, NSPIN);
-  set_peratom(atom, LEVEL_NAME, &level, Atom::INT, 0);
-  set_peratom(atom, WALL_NORMAL_NAME, &wall_normal, Atom::DOUBLE, 3);
-  set_peratom(atom, WALL_DISTANCE_NAME, &wall_distance, Atom::DOUBLE, 0);
+  set_peratom(atom, H_NAME, &arrays->smoothing_length, Atom::DOUBLE, 0);
+  set_peratom(atom, STRESS_NAME, &arrays->stress, Atom::DOUBLE, NVOIGT);
+  set_peratom(atom, STRESS_RATE_NAME, &arrays->stress_rate, Atom::DOUBLE, NVOIGT);
+  set_peratom(atom, STRAIN_NAME, &arrays->total_strain, Atom::DOUBLE, NVOIGT);
+  set_peratom(atom, STRAIN_RATE_NAME, &arrays->strain_rate, Atom::DOUBLE, NVOIGT);
+  set_peratom(atom, SPIN_NAME, &arrays->spin, Atom::DOUBLE, NSPIN);
+  set_peratom(atom, LEVEL_NAME, &arrays->level, Atom::INT, 0);
+  set_peratom(atom, WALL_NORMAL_NAME, &arrays->wall_normal, Atom::DOUBLE, 3);
+  set_peratom(atom, WALL_DISTANCE_NAME, &arrays->wall_distance, Atom::DOUBLE, 0);
 
   // Which fields travel where (why):
   //  comm (every step):  rho, stress, vest   - the pair sum needs them from ghosts
@@ -145,6 +165,15 @@ void AtomVecSPHSoil::process_args(int narg, char **arg)
 
 void AtomVecSPHSoil::grow_pointers()
 {
+  smoothing_length = arrays->smoothing_length;
+  stress = arrays->stress;
+  stress_rate = arrays->stress_rate;
+  total_strain = arrays->total_strain;
+  strain_rate = arrays->strain_rate;
+  spin = arrays->spin;
+  level = arrays->level;
+  wall_normal = arrays->wall_normal;
+  wall_distance = arrays->wall_distance;
   rmass = atom->rmass;
   rho = atom->rho;
   drho = atom->drho;

@@ -34,7 +34,9 @@ class AtomVecSPHSoil : public AtomVec {
   int property_atom(SphSoilCompat::PropertyAtomName) override;
   void pack_property_atom(int, double *, int, int) override;
 
-  // Per-atom arrays owned by this style (registered with Atom::add_peratom).
+  // Per-atom arrays owned by this style (registered with Atom::add_peratom; the
+  // pointers LAMMPS grows live in a block that outlives the style, see the .cpp,
+  // and are copied here by grow_pointers()).
   // Tensors are stored in Voigt order xx, yy, zz, xy, xz, yz; in 2D (plane
   // strain) xz and yz stay zero while zz is carried.
   double *smoothing_length;    // h, kernel support is 2h
@@ -47,6 +49,15 @@ class AtomVecSPHSoil : public AtomVec {
   double **wall_normal;        // unit normal into the soil for wall particles, else 0
   double *wall_distance;       // distance of a wall particle behind the wall surface
 
+  struct Arrays {
+    double *smoothing_length = nullptr;
+    double **stress = nullptr, **stress_rate = nullptr, **total_strain = nullptr;
+    double **strain_rate = nullptr, **spin = nullptr;
+    int *level = nullptr;
+    double **wall_normal = nullptr;
+    double *wall_distance = nullptr;
+  };
+
   // Core Atom arrays with the same meaning as in atom_style sph.
   double *rmass, *rho, *drho, **vest;
 
@@ -54,6 +65,7 @@ class AtomVecSPHSoil : public AtomVec {
   static constexpr int NSPIN = 3;
 
  private:
+  Arrays *arrays;    // the registered pointers
   std::string field_storage[12];
 };
 
