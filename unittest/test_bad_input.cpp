@@ -300,10 +300,21 @@ std::vector<BadInput> cases()
         "limit 5.80921e-05 = 0.2 * min(h) / c_p; use 'cfl 0.1' in fix sph/soil (adaptive step) or a "
         "timestep <= 5.80921e-05");
   error("RefineRegion", "patch", {}, "fix r all sph/soil/refine 10 region nowhere",
-        "Fix sph/soil/refine region nowhere does not exist");
+        "fix sph/soil/refine region nowhere does not exist");
   error("RefineUnknownKeyword", "patch", {}, "fix r all sph/soil/refine 10 ratio 2",
-        "Illegal fix sph/soil/refine keyword ratio (allowed: threshold, separation, smoothing, dref, "
-        "maxlevel, region)");
+        "Illegal fix sph/soil/refine keyword ratio (allowed: criterion, region, threshold, separation, "
+        "smoothing, dref, maxlevel)");
+  error("RefineUnknownCriterion", "patch", {}, "fix r all sph/soil/refine 10 criterion stress",
+        "Illegal fix sph/soil/refine criterion stress (allowed: strain, all, v_name)");
+  error("RefineKeywordOfAnotherCriterion", "patch", {}, "fix r all sph/soil/refine 10 criterion all threshold 0.1",
+        "Illegal fix sph/soil/refine threshold: a keyword of criterion strain, not of criterion all");
+  error("RefineCriterionAfterItsKeywords", "patch", {}, "fix r all sph/soil/refine 10 threshold 0.1 criterion all",
+        "Illegal fix sph/soil/refine criterion all: give it before threshold, a keyword of criterion strain");
+  error("RefineVariableMissing", "walls", {"fix r soil sph/soil/refine 10 criterion v_nope"}, "run 0 post no",
+        "fix sph/soil/refine criterion v_nope: variable nope does not exist");
+  error("RefineVariableNotAtomStyle", "walls",
+        {"variable flat equal 1", "fix r soil sph/soil/refine 10 criterion v_flat"}, "run 0 post no",
+        "fix sph/soil/refine criterion v_flat: variable flat must be atom-style");
   error("RefineKeywordWithoutValue", "patch", {}, "fix r all sph/soil/refine 10 threshold",
         "Illegal fix sph/soil/refine command: keyword threshold needs a value");
   error("RefineWithoutIntegrator", "walls", {"unfix integrate", "fix r soil sph/soil/refine 10"},
@@ -337,7 +348,10 @@ std::vector<BadInput> cases()
   error("StaticRefineRegion", "patch", {}, "sph_soil/refine all region nowhere",
         "sph_soil/refine region nowhere does not exist");
   error("StaticRefineUnknownKeyword", "patch", {}, "sph_soil/refine all maxlevel 2",
-        "Illegal sph_soil/refine keyword maxlevel (allowed: separation, smoothing, dref, region)");
+        "Illegal sph_soil/refine keyword maxlevel (allowed: criterion, region, separation, smoothing, "
+        "dref)");
+  error("StaticRefineUnknownCriterion", "patch", {}, "sph_soil/refine all criterion 0.5",
+        "Illegal sph_soil/refine criterion 0.5 (allowed: strain, all, v_name)");
   error("StaticRefineWithoutPairStyle", "box",
         {"create_atoms 1 box", "sph_soil/set all mass 0.265 h 0.012 density 2650"}, "sph_soil/refine all",
         "sph_soil/refine command requires pair_style sph/soil");

@@ -258,6 +258,50 @@ TEST_F(Refinement, WorksUnderAtomStyleHybrid)
   EXPECT_NEAR(totals()[0], mass, 1e-12);
 }
 
+// criterion v_name: exactly the particles where the atom-style variable is non-zero split, with
+// the fix and with the command (the lattice sites x < 0.04, y < 0.03: 4 x 3 of them)
+TEST_F(Refinement, VariableCriterionSplitsExactlyWhereNonZero)
+{
+  auto check = [&](const char *what) {
+    int parents_local = 0, strays_local = 0;
+    for (int i = 0; i < lmp->atom->nlocal; i++) {
+      const double *x = lmp->atom->x[i];
+      const bool inside = x[0] < 0.04 && x[1] < 0.03;    // daughters stay within d/4 of a site
+      if (soil_avec(lmp)->level[i] == 1) {
+        if (inside) parents_local++;
+        else strays_local++;
+      } else if (inside) {
+        strays_local++;
+      }
+    }
+    int parents, strays;
+    MPI_Allreduce(&parents_local, &parents, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+    MPI_Allreduce(&strays_local, &strays, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+    EXPECT_EQ(parents, 4 * 12) << what;
+    EXPECT_EQ(strays, 0) << what;
+    EXPECT_EQ(lmp->atom->natoms, 100 + 3 * 12) << what;
+  };
+  patch(2, 10, false);
+  HIDE_OUTPUT([&] {
+    command("variable corner atom \"x < 0.04 && y < 0.03\"");
+    command("fix integrate all sph/soil cfl 0.1");
+    command("fix refine all sph/soil/refine 1 criterion v_corner");
+    command("run 1 post no");
+  });
+  check("fix sph/soil/refine");
+
+  HIDE_OUTPUT([&] {
+    command("clear");
+    command("units si");
+  });
+  patch(2, 10, false);
+  HIDE_OUTPUT([&] {
+    command("variable corner atom \"x < 0.04 && y < 0.03\"");
+    command("sph_soil/refine all criterion v_corner");
+  });
+  check("sph_soil/refine");
+}
+
 TEST_F(Refinement, RestartAfterSplitsContinuesIdentically)
 {
   patch(2, 12, true);

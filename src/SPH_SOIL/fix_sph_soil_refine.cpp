@@ -21,6 +21,7 @@
 #include "soil_split.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_input.h"
+#include "sph_soil_refine_criterion.h"
 #include "sph_soil_splitter.h"
 #include "math_const.h"
 #include "update.h"
@@ -42,7 +43,7 @@ const char *const STYLE = "Fix sph/soil/refine";
 /* ---------------------------------------------------------------------- */
 
 FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), threshold(0.05), maxlevel(1), region(nullptr), list(nullptr),
+    Fix(lmp, narg, arg), maxlevel(1), list(nullptr),
     integrator(nullptr), parameters_reported(false), last_split(0), last_split_step(-1),
     total_split(0)
 {
@@ -53,26 +54,21 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
   if (nevery < 1) error->all(FLERR, "Illegal fix sph/soil/refine N {}: must be >= 1", nevery);
 
   splitter.reset(new SPHSoilSplitter(lmp, STYLE));
+  selection.reset(new SPHSoilRefineSelection(lmp, "fix sph/soil/refine", "strain"));
   for (int iarg = 4; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal fix sph/soil/refine command: keyword {} needs a value", keyword);
     const char *value = arg[iarg + 1];
-    if (splitter->parse_keyword("fix sph/soil/refine", keyword, value)) {
+    if (selection->parse_keyword(keyword, value) ||
+        splitter->parse_keyword("fix sph/soil/refine", keyword, value)) {
       continue;
-    } else if (keyword == "threshold") {
-      threshold = SphSoilInput::number(FLERR, lmp, "fix sph/soil/refine threshold", value,
-                                       SphSoilInput::at_least(0.0));
     } else if (keyword == "maxlevel") {
       maxlevel = SphSoilInput::integer(FLERR, lmp, "fix sph/soil/refine maxlevel", value, 1,
                                        SPHSoil::MAX_LEVEL);
-    } else if (keyword == "region") {
-      region_id = value;
-      if (!SphSoilCompat::find_region(domain, region_id))
-        error->all(FLERR, "Fix sph/soil/refine region {} does not exist", region_id);
     } else {
-      error->all(FLERR, "Illegal fix sph/soil/refine keyword {} (allowed: threshold, {}, maxlevel, "
-                        "region)", keyword, SPHSoilSplitter::KEYWORDS);
+      error->all(FLERR, "Illegal fix sph/soil/refine keyword {} (allowed: {}, threshold, {}, "
+                        "maxlevel)", keyword, SPHSoilRefineSelection::KEYWORDS, SPHSoilSplitter::KEYWORDS);
     }
   }
 
@@ -100,10 +96,7 @@ int FixSPHSoilRefine::setmask()
 void FixSPHSoilRefine::init()
 {
   splitter->init();
-  if (!region_id.empty()) {
-    region = SphSoilCompat::find_region(domain, region_id);
-    if (!region) error->all(FLERR, "Fix sph/soil/refine region {} does not exist", region_id);
-  }
+  selection->init();
 
   integrator = nullptr;
   for (int ifix = 0; ifix < modify->nfix; ifix++)
@@ -246,6 +239,8 @@ void FixSPHSoilRefine::report_parameters()
     if (c.unrefined_neighbour) s += " 3";
     return s + ")";
   };
+  utils::logmesg(lmp, "fix sph/soil/refine: splits {} up to level {}\n", selection->describe(),
+                 maxlevel);
   utils::logmesg(lmp, "fix sph/soil/refine: separation {} smoothing {} with h/d = {:.4g}: kernel "
                       "gradient error E_a = {:.4g}, E_b = {:.4g} (1/d^{}); d_ij/d_ref = 1.0: {}, "
                       "0.85: {}\n", eps, alpha, ra_all, error_a, error_b, dimension,
@@ -261,17 +256,7 @@ void FixSPHSoilRefine::report_parameters()
 
 void FixSPHSoilRefine::end_of_step()
 {
-  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
-  if (region) region->prematch();
-  std::vector<int> parents;
-  const int nlocal = atom->nlocal;
-  double **x = atom->x;
-  for (int i = 0; i < nlocal; i++) {
-    if (!(atom->mask[i] & groupbit) || avec->level[i] >= maxlevel) continue;
-    if (!(SPHSoil::strain_measure(avec->total_strain[i]) > threshold)) continue;
-    if (region && !region->match(x[i][0], x[i][1], x[i][2])) continue;
-    parents.push_back(i);
-  }
+  const std::vector<int> parents = selection->parents(groupbit, maxlevel);
   bigint candidates = parents.size(), all_candidates = 0;
   MPI_Allreduce(&candidates, &all_candidates, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   last_split_step = update->ntimestep;

@@ -2,9 +2,10 @@
    SPH_SOIL package for LAMMPS: fix sph/soil/refine
 
    Dynamic particle refinement (doc/theory.rst section 5): every N steps, each
-   particle of the group whose accumulated strain measure
-   eps_xx^2 + eps_yy^2 + eps_zz^2 exceeds a threshold, and whose level is
-   below maxlevel, is split into 4 (2D) or 8 (3D) daughters.
+   particle of the group that its criterion selects (by default: whose
+   accumulated strain measure eps_xx^2 + eps_yy^2 + eps_zz^2 exceeds a
+   threshold), and whose level is below maxlevel, is split into 4 (2D) or 8
+   (3D) daughters.
    See doc/fix_sph_soil_refine.rst.
 ------------------------------------------------------------------------- */
 
@@ -38,10 +39,8 @@ class FixSPHSoilRefine : public Fix {
   void restart(char *) override;
 
  protected:
-  double threshold;      // strain measure above which a particle splits
   int maxlevel;          // particles at this level are not split again
-  std::string region_id;
-  class Region *region;
+  std::unique_ptr<class SPHSoilRefineSelection> selection;    // criterion, region
   std::unique_ptr<class SPHSoilSplitter> splitter;
   class NeighList *list;
   class FixSPHSoil *integrator;

@@ -12,8 +12,8 @@
 #include "group.h"
 #include "neighbor.h"
 #include "pair_sph_soil.h"
-#include "region.h"
 #include "sph_soil_compat.h"
+#include "sph_soil_refine_criterion.h"
 #include "sph_soil_splitter.h"
 #include "utils.h"
 
@@ -38,20 +38,14 @@ void SPHSoilRefine::command(int narg, char **arg)
   const int groupbit = group->bitmask[igroup];
 
   SPHSoilSplitter splitter(lmp, STYLE);
-  Region *region = nullptr;
+  SPHSoilRefineSelection selection(lmp, STYLE, "all");
   for (int iarg = 1; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "Illegal sph_soil/refine command: keyword {} needs a value", keyword);
     const char *value = arg[iarg + 1];
-    if (splitter.parse_keyword(STYLE, keyword, value)) {
-      continue;
-    } else if (keyword == "region") {
-      region = SphSoilCompat::find_region(domain, value);
-      if (!region) error->all(FLERR, "sph_soil/refine region {} does not exist", value);
-    } else {
-      error->all(FLERR, "Illegal sph_soil/refine keyword {} (allowed: {}, region)", keyword,
-                 SPHSoilSplitter::KEYWORDS);
-    }
+    if (!selection.parse_keyword(keyword, value) && !splitter.parse_keyword(STYLE, keyword, value))
+      error->all(FLERR, "Illegal sph_soil/refine keyword {} (allowed: {}, {})", keyword,
+                 SPHSoilRefineSelection::KEYWORDS, SPHSoilSplitter::KEYWORDS);
   }
   if (force->pair == nullptr || !force->pair_match("sph/soil", 1))
     error->all(FLERR, "sph_soil/refine command requires pair_style sph/soil");
@@ -60,6 +54,7 @@ void SPHSoilRefine::command(int narg, char **arg)
   const int handle = SphSoilCompat::request_command_full_list(neighbor, this, STYLE);
   lmp->init();
   splitter.init();
+  selection.init();
 
   // wall particles carry the wall geometry; splitting them would break it
   auto pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));
@@ -86,13 +81,7 @@ void SPHSoilRefine::command(int narg, char **arg)
   // sph_soil/refine at the same step would otherwise get the stale list of the first)
   SphSoilCompat::build_occasional_list(neighbor, list);
 
-  if (region) region->prematch();
-  std::vector<int> parents;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    if (region && !region->match(atom->x[i][0], atom->x[i][1], atom->x[i][2])) continue;
-    parents.push_back(i);
-  }
+  const std::vector<int> parents = selection.parents(groupbit, 0);
   const bigint before = atom->natoms;
   const bigint split = splitter.split(parents, list);
   if (comm->me == 0)

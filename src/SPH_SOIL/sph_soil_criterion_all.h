@@ -1,0 +1,22 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL refinement criterion `all` (the default of sph_soil/refine):
+   every particle of the group (and region) splits.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_SOIL_CRITERION_ALL_H
+#define LMP_SPH_SOIL_CRITERION_ALL_H
+
+#include "sph_soil_refine_criterion.h"
+
+namespace LAMMPS_NS {
+
+class SPHSoilCriterionAll : public SPHSoilRefineCriterion {
+ public:
+  explicit SPHSoilCriterionAll(LAMMPS *lmp) : SPHSoilRefineCriterion(lmp) {}
+  bool wants(int) const override { return true; }
+  std::string describe() const override { return "all"; }
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,127 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package for LAMMPS: refinement criteria (the registry) and the
+   selection of the particles to split
+------------------------------------------------------------------------- */
+
+#include "sph_soil_refine_criterion.h"
+
+#include "atom.h"
+#include "atom_vec_sph_soil.h"
+#include "domain.h"
+#include "error.h"
+#include "region.h"
+#include "sph_soil_compat.h"
+#include "sph_soil_criterion_all.h"
+#include "sph_soil_criterion_strain.h"
+#include "sph_soil_criterion_variable.h"
+#include "utils.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// The registry: one line per criterion. `word` follows the keyword `criterion` (a trailing '_'
+// marks a prefix: v_name); `keywords` are the criterion's own, for messages.
+struct Criterion {
+  const char *word;
+  const char *keywords;
+  SPHSoilRefineCriterion *(*make)(LAMMPS *lmp, const std::string &word);
+};
+const Criterion CRITERIA[] = {
+    {"strain", "threshold", [](LAMMPS *lmp, const std::string &) -> SPHSoilRefineCriterion * {
+       return new SPHSoilCriterionStrain(lmp);
+     }},
+    {"all", "", [](LAMMPS *lmp, const std::string &) -> SPHSoilRefineCriterion * {
+       return new SPHSoilCriterionAll(lmp);
+     }},
+    {"v_", "", [](LAMMPS *lmp, const std::string &word) -> SPHSoilRefineCriterion * {
+       return new SPHSoilCriterionVariable(lmp, word.substr(2));
+     }},
+};
+
+bool matches(const Criterion &c, const std::string &word)
+{
+  const std::string w = c.word;
+  if (w.back() == '_') return word.size() > w.size() && word.compare(0, w.size(), w) == 0;
+  return word == w;
+}
+
+}    // namespace
+
+const char *const LAMMPS_NS::REFINE_CRITERIA = "strain, all, v_name";
+
+std::unique_ptr<SPHSoilRefineCriterion> LAMMPS_NS::make_refine_criterion(LAMMPS *lmp,
+                                                                         const std::string &command,
+                                                                         const std::string &word)
+{
+  for (const auto &c : CRITERIA)
+    if (matches(c, word)) return std::unique_ptr<SPHSoilRefineCriterion>(c.make(lmp, word));
+  lmp->error->all(FLERR, "Illegal {} criterion {} (allowed: {})", command, word, REFINE_CRITERIA);
+  return nullptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+SPHSoilRefineSelection::SPHSoilRefineSelection(LAMMPS *lmp, const std::string &command,
+                                               const std::string &default_criterion) :
+    Pointers(lmp), command(command), criterion_word(default_criterion),
+    criterion(make_refine_criterion(lmp, command, default_criterion)), region(nullptr)
+{
+}
+
+bool SPHSoilRefineSelection::parse_keyword(const std::string &keyword, const char *value)
+{
+  if (keyword == "criterion") {
+    if (!criterion_keyword.empty() && criterion_word != value)
+      error->all(FLERR, "Illegal {} criterion {}: give it before {}, a keyword of criterion {}",
+                 command, value, criterion_keyword, criterion_word);
+    criterion = make_refine_criterion(lmp, command, value);
+    criterion_word = value;
+  } else if (keyword == "region") {
+    region_id = value;
+    if (!SphSoilCompat::find_region(domain, region_id))
+      error->all(FLERR, "{} region {} does not exist", command, region_id);
+  } else if (criterion->parse_keyword(command, keyword, value)) {
+    criterion_keyword = keyword;
+  } else {
+    // a keyword of another criterion: say whose
+    for (const auto &c : CRITERIA)
+      for (const auto &own : utils::split_words(c.keywords))
+        if (own == keyword)
+          error->all(FLERR, "Illegal {} {}: a keyword of criterion {}, not of criterion {}", command,
+                     keyword, c.word, criterion_word);
+    return false;
+  }
+  return true;
+}
+
+void SPHSoilRefineSelection::init()
+{
+  region = nullptr;
+  if (!region_id.empty()) {
+    region = SphSoilCompat::find_region(domain, region_id);
+    if (!region) error->all(FLERR, "{} region {} does not exist", command, region_id);
+  }
+  criterion->init(command);
+}
+
+std::vector<int> SPHSoilRefineSelection::parents(int groupbit, int maxlevel)
+{
+  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  criterion->prepare();
+  if (region) region->prematch();
+  std::vector<int> selected;
+  double **x = atom->x;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    if (maxlevel > 0 && avec->level[i] >= maxlevel) continue;
+    if (region && !region->match(x[i][0], x[i][1], x[i][2])) continue;
+    if (criterion->wants(i)) selected.push_back(i);
+  }
+  return selected;
+}
+
+std::string SPHSoilRefineSelection::describe() const
+{
+  return criterion->describe() + (region_id.empty() ? "" : ", in region " + region_id);
+}
