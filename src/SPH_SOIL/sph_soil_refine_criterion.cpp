@@ -60,6 +60,9 @@ std::unique_ptr<SPHSoilRefineCriterion> LAMMPS_NS::make_refine_criterion(LAMMPS 
   return nullptr;
 }
 
+// (a definition for C++11, where LAMMPS 29Sep2021 compiles: the value is passed by reference)
+constexpr const char *SPHSoilRefineSelection::KEYWORDS;
+
 /* ---------------------------------------------------------------------- */
 
 SPHSoilRefineSelection::SPHSoilRefineSelection(LAMMPS *lmp, const std::string &command,

@@ -37,6 +37,9 @@ SPHSoilSplitter::SPHSoilSplitter(LAMMPS *lmp, const std::string &who_) :
 {
 }
 
+// (a definition for C++11, where LAMMPS 29Sep2021 compiles: the value is passed by reference)
+constexpr const char *SPHSoilSplitter::KEYWORDS;
+
 /* ---------------------------------------------------------------------- */
 
 bool SPHSoilSplitter::parse_keyword(const std::string &command, const std::string &keyword,
