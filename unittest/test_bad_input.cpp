@@ -135,7 +135,9 @@ std::vector<BadInput> cases()
 
   // ---- pair_style sph/soil
   error("PairUnknownKeyword", "patch", {}, "pair_style sph/soil gamma 1",
-        "Illegal pair_style sph/soil keyword gamma (allowed: alpha, beta, wall, fit)");
+        "Illegal pair_style sph/soil keyword gamma (allowed: alpha, beta, wall, fit, kernel)");
+  error("PairKernel", "patch", {}, "pair_style sph/soil kernel gaussian",
+        "Illegal pair_style sph/soil kernel gaussian: must be one of cubic, wendland2");
   error("PairKeywordWithoutValue", "patch", {}, "pair_style sph/soil alpha",
         "Illegal pair_style sph/soil command: keyword alpha needs a value");
   error("PairAlphaNegative", "patch", {}, "pair_style sph/soil alpha -1",

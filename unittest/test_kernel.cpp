@@ -1,21 +1,31 @@
-// Cubic spline kernel: normalisation by quadrature and derivatives against finite differences.
-#include "soil_kernel.h"
+// The kernels (cubic spline, Wendland C2), every one by the same tests: normalisation by
+// quadrature, compact support and continuity, derivatives against finite differences, the
+// inflection point that the refinement's instability conditions use, the pair loop's form of
+// the gradient; and the choice by keyword.
+#include "soil_kernels.h"
 
 #include "gtest/gtest.h"
 
 #include <cmath>
 
-using SPHSoil::CubicSpline;
+using namespace SPHSoil;
 
 namespace {
 constexpr double PI = 3.14159265358979323846;
 
+template <class Kernel> class Kernels : public ::testing::Test {};
+using KernelTypes = ::testing::Types<CubicSpline, WendlandC2>;
+struct KernelNames {
+  template <class Kernel> static std::string GetName(int) { return Kernel::NAME; }
+};
+TYPED_TEST_SUITE(Kernels, KernelTypes, KernelNames);
+
 // integral of W over R^D using the radial form: 2 pi r W dr (2D), 4 pi r^2 W dr (3D),
-// composite Simpson on [0, 2h] split at the kink q = 1.
-double radial_integral(int dimension, double h, int n)
+// composite Simpson on [0, 2h] split at q = 1 (the cubic spline's kink)
+template <class Kernel> double radial_integral(int dimension, double h, int n)
 {
   auto integrand = [&](double r) {
-    const double w = CubicSpline::value(dimension, r, h);
+    const double w = Kernel::value(dimension, r, h);
     return dimension == 2 ? 2.0 * PI * r * w : 4.0 * PI * r * r * w;
   };
   double total = 0.0;
@@ -29,15 +39,15 @@ double radial_integral(int dimension, double h, int n)
 }
 }    // namespace
 
-TEST(CubicSpline, NormalisedIn2DAnd3D)
+TYPED_TEST(Kernels, NormalisedIn2DAnd3D)
 {
   for (double h : {0.001, 0.37, 2.5}) {
-    EXPECT_NEAR(radial_integral(2, h, 2000), 1.0, 1.0e-6) << "2D, h = " << h;
-    EXPECT_NEAR(radial_integral(3, h, 2000), 1.0, 1.0e-6) << "3D, h = " << h;
+    EXPECT_NEAR(radial_integral<TypeParam>(2, h, 2000), 1.0, 1.0e-6) << "2D, h = " << h;
+    EXPECT_NEAR(radial_integral<TypeParam>(3, h, 2000), 1.0, 1.0e-6) << "3D, h = " << h;
   }
 }
 
-TEST(CubicSpline, NormalisedOnA2DCartesianGrid)
+TYPED_TEST(Kernels, NormalisedOnA2DCartesianGrid)
 {
   // a direct 2D quadrature (not using radial symmetry): midpoint rule on a fine grid
   const double h = 1.0;
@@ -47,76 +57,100 @@ TEST(CubicSpline, NormalisedOnA2DCartesianGrid)
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++) {
       const double x = -2.0 * h + (i + 0.5) * dx, y = -2.0 * h + (j + 0.5) * dx;
-      sum += CubicSpline::value(2, std::sqrt(x * x + y * y), h) * dx * dx;
+      sum += TypeParam::value(2, std::sqrt(x * x + y * y), h) * dx * dx;
     }
   EXPECT_NEAR(sum, 1.0, 1.0e-5);
 }
 
-TEST(CubicSpline, CompactSupportAndContinuity)
+TYPED_TEST(Kernels, CompactSupportAndContinuity)
 {
+  const double support = TypeParam::SUPPORT;
   for (int dim : {2, 3}) {
-    EXPECT_EQ(CubicSpline::value(dim, 2.0, 1.0), 0.0);
-    EXPECT_EQ(CubicSpline::value(dim, 2.5, 1.0), 0.0);
-    EXPECT_EQ(CubicSpline::derivative(dim, 2.0, 1.0), 0.0);
+    EXPECT_EQ(TypeParam::value(dim, support, 1.0), 0.0);
+    EXPECT_EQ(TypeParam::value(dim, support + 0.5, 1.0), 0.0);
+    EXPECT_EQ(TypeParam::derivative(dim, support, 1.0), 0.0);
+    EXPECT_NEAR(TypeParam::value(dim, support - 1e-9, 1.0), 0.0, 1e-12);
     // continuous value and first derivative at q = 1
-    EXPECT_NEAR(CubicSpline::value(dim, 1.0 - 1e-12, 1.0), CubicSpline::value(dim, 1.0, 1.0), 1e-10);
-    EXPECT_NEAR(CubicSpline::derivative(dim, 1.0 - 1e-12, 1.0),
-                CubicSpline::derivative(dim, 1.0, 1.0), 1e-10);
+    EXPECT_NEAR(TypeParam::value(dim, 1.0 - 1e-12, 1.0), TypeParam::value(dim, 1.0, 1.0), 1e-10);
+    EXPECT_NEAR(TypeParam::derivative(dim, 1.0 - 1e-12, 1.0), TypeParam::derivative(dim, 1.0, 1.0), 1e-10);
   }
-  EXPECT_NEAR(CubicSpline::value(2, 0.0, 1.0), 10.0 / (7.0 * PI), 1e-15);
-  EXPECT_NEAR(CubicSpline::value(3, 0.0, 1.0), 1.0 / PI, 1e-15);
 }
 
-TEST(CubicSpline, DerivativesMatchFiniteDifferences)
+TEST(Kernels, CentralValues)
+{
+  EXPECT_NEAR(CubicSpline::value(2, 0.0, 1.0), 10.0 / (7.0 * PI), 1e-15);
+  EXPECT_NEAR(CubicSpline::value(3, 0.0, 1.0), 1.0 / PI, 1e-15);
+  EXPECT_NEAR(WendlandC2::value(2, 0.0, 1.0), 7.0 / (4.0 * PI), 1e-15);
+  EXPECT_NEAR(WendlandC2::value(3, 0.0, 1.0), 21.0 / (16.0 * PI), 1e-15);
+}
+
+TYPED_TEST(Kernels, DerivativesMatchFiniteDifferences)
 {
   const double h = 0.3, eps = 1.0e-6;
   for (int dim : {2, 3}) {
-    for (double q = 0.05; q < 2.0; q += 0.0731) {
+    for (double q = 0.05; q < TypeParam::SUPPORT; q += 0.0731) {
       const double r = q * h;
-      const double fd = (CubicSpline::value(dim, r + eps, h) - CubicSpline::value(dim, r - eps, h)) / (2 * eps);
-      const double scale = std::fabs(CubicSpline::derivative(dim, 0.5 * h, h));
-      EXPECT_NEAR(CubicSpline::derivative(dim, r, h), fd, 1e-6 * scale) << "dim " << dim << " q " << q;
-      EXPECT_NEAR(CubicSpline::gradient_factor(dim, r, h) * r, CubicSpline::derivative(dim, r, h),
-                  1e-12 * scale);
-      const double fd2 = (CubicSpline::derivative(dim, r + eps, h) - CubicSpline::derivative(dim, r - eps, h)) / (2 * eps);
-      const double scale2 = std::fabs(CubicSpline::second_derivative(dim, 0.0, h));
+      const double fd = (TypeParam::value(dim, r + eps, h) - TypeParam::value(dim, r - eps, h)) / (2 * eps);
+      const double scale = std::fabs(TypeParam::derivative(dim, 0.5 * h, h));
+      EXPECT_NEAR(TypeParam::derivative(dim, r, h), fd, 1e-6 * scale) << "dim " << dim << " q " << q;
+      EXPECT_NEAR(TypeParam::gradient_factor(dim, r, h) * r, TypeParam::derivative(dim, r, h), 1e-12 * scale);
+      const double fd2 = (TypeParam::derivative(dim, r + eps, h) - TypeParam::derivative(dim, r - eps, h)) / (2 * eps);
+      const double scale2 = std::fabs(TypeParam::second_derivative(dim, 0.0, h));
       if (std::fabs(q - 1.0) > 1e-3)
-        EXPECT_NEAR(CubicSpline::second_derivative(dim, r, h), fd2, 1e-5 * scale2) << "dim " << dim << " q " << q;
+        EXPECT_NEAR(TypeParam::second_derivative(dim, r, h), fd2, 1e-5 * scale2) << "dim " << dim << " q " << q;
     }
   }
 }
 
-TEST(CubicSpline, GradientOfAnOffsetKernelMatchesFiniteDifferencesIn3D)
+TYPED_TEST(Kernels, GradientOfAnOffsetKernelMatchesFiniteDifferencesIn3D)
 {
   // grad W(x) = x * gradient_factor(|x|), checked component-wise
   const double h = 0.7, eps = 1e-6;
   const double x[3] = {0.31, -0.52, 0.44};
-  auto w = [&](double a, double b, double c) { return CubicSpline::value(3, std::sqrt(a * a + b * b + c * c), h); };
+  auto w = [&](double a, double b, double c) { return TypeParam::value(3, std::sqrt(a * a + b * b + c * c), h); };
   const double r = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-  const double g = CubicSpline::gradient_factor(3, r, h);
+  const double g = TypeParam::gradient_factor(3, r, h);
   const double fd[3] = {(w(x[0] + eps, x[1], x[2]) - w(x[0] - eps, x[1], x[2])) / (2 * eps),
                         (w(x[0], x[1] + eps, x[2]) - w(x[0], x[1] - eps, x[2])) / (2 * eps),
                         (w(x[0], x[1], x[2] + eps) - w(x[0], x[1], x[2] - eps)) / (2 * eps)};
   for (int k = 0; k < 3; k++) EXPECT_NEAR(g * x[k], fd[k], 1e-7);
 }
 
-TEST(CubicSpline, SecondDerivativeChangesSignAtTwoThirds)
+TYPED_TEST(Kernels, SecondDerivativeChangesSignAtTheInflection)
 {
+  const double q = TypeParam::INFLECTION;
   for (int dim : {2, 3}) {
-    EXPECT_LT(CubicSpline::second_derivative(dim, 0.66, 1.0), 0.0);
-    EXPECT_GT(CubicSpline::second_derivative(dim, 0.67, 1.0), 0.0);
-    EXPECT_NEAR(CubicSpline::second_derivative(dim, 2.0 / 3.0, 1.0), 0.0, 1e-14);
+    EXPECT_LT(TypeParam::second_derivative(dim, q - 0.01, 1.0), 0.0);
+    EXPECT_GT(TypeParam::second_derivative(dim, q + 0.01, 1.0), 0.0);
+    EXPECT_NEAR(TypeParam::second_derivative(dim, q, 1.0), 0.0, 1e-14);
   }
 }
 
-TEST(CubicSpline, GradientFactorFromInverseAgrees)
+TYPED_TEST(Kernels, GradientFactorFromInverseAgrees)
 {
   for (double h : {0.0012, 0.7, 3.0})
     for (double q = 0.01; q < 2.2; q += 0.037) {
       const double r = q * h;
-      EXPECT_NEAR(CubicSpline::gradient_factor_from_inverse<2>(r, 1.0 / h, h / r),
-                  CubicSpline::gradient_factor(2, r, h), 1e-13 * std::fabs(CubicSpline::gradient_factor(2, 0.0, h)));
-      EXPECT_NEAR(CubicSpline::gradient_factor_from_inverse<3>(r, 1.0 / h, h / r),
-                  CubicSpline::gradient_factor(3, r, h), 1e-13 * std::fabs(CubicSpline::gradient_factor(3, 0.0, h)));
+      EXPECT_NEAR(TypeParam::template gradient_factor_from_inverse<2>(r, 1.0 / h, h / r),
+                  TypeParam::gradient_factor(2, r, h), 1e-13 * std::fabs(TypeParam::gradient_factor(2, 0.0, h)));
+      EXPECT_NEAR(TypeParam::template gradient_factor_from_inverse<3>(r, 1.0 / h, h / r),
+                  TypeParam::gradient_factor(3, r, h), 1e-13 * std::fabs(TypeParam::gradient_factor(3, 0.0, h)));
     }
+}
+
+TYPED_TEST(Kernels, ChosenByItsName)
+{
+  KernelKind kind;
+  ASSERT_TRUE(kernel_kind(TypeParam::NAME, kind));
+  EXPECT_STREQ(kernel_name(kind), TypeParam::NAME);
+  EXPECT_EQ(kernel_support(kind), double(TypeParam::SUPPORT));    // (a value: C++11 odr)
+  EXPECT_EQ(kernel_inflection(kind), double(TypeParam::INFLECTION));
+  EXPECT_EQ(kernel_value(kind, 2, 0.3, 0.7), TypeParam::value(2, 0.3, 0.7));
+  EXPECT_EQ(kernel_gradient_factor(kind, 3, 0.3, 0.7), TypeParam::gradient_factor(3, 0.3, 0.7));
+}
+
+TEST(Kernels, UnknownNameIsRefused)
+{
+  KernelKind kind;
+  EXPECT_FALSE(kernel_kind("gaussian", kind));
 }

@@ -100,3 +100,29 @@ TEST(RefineError, InstabilityConditionsByHand)
         if (!k.daughters_too_close && k.unrefined_neighbour) EXPECT_TRUE(k.refined_neighbours);
       }
 }
+
+// With the Wendland C2 kernel (W'' < 0 only for r < h/2) the conditions use 1/2 for 2/3: the
+// paper's unstable (0.55, 0.7) becomes stable at d_ij = d_ref
+TEST(RefineError, InstabilityConditionsFollowTheKernelsInflection)
+{
+  const double q = WendlandC2::INFLECTION;
+  auto c = instability_conditions(0.55, 0.7, 1.2, 1.0, q);
+  EXPECT_FALSE(c.daughters_too_close);    // 0.5 * 0.7 * 1.2 = 0.42 < 0.55
+  EXPECT_FALSE(c.refined_neighbours);     // 0.42 + 0.55 = 0.97 < 1
+  EXPECT_FALSE(c.unrefined_neighbour);    // 0.5 * 1.7 * 1.2 / 2 + 0.275 = 0.785 < 1
+  c = instability_conditions(0.3, 0.7, 1.2, 0.85, q);
+  EXPECT_TRUE(c.daughters_too_close);     // 0.42 > 0.3
+  EXPECT_FALSE(c.refined_neighbours);     // 0.72 < 0.85
+  // the cubic spline's default is the paper's
+  EXPECT_EQ(instability_conditions(0.55, 0.7, 1.2, 1.0).any(),
+            instability_conditions(0.55, 0.7, 1.2, 1.0, CubicSpline::INFLECTION).any());
+}
+
+TEST(RefineError, WendlandKernelErrorVanishesForCoincidingDaughtersAndIsPositiveOtherwise)
+{
+  const auto wendland = KernelKind::wendland2;
+  EXPECT_LT(kernel_gradient_error_fixed(2, 0.0, 1.0, 1.2, Case::UNREFINED, 64, wendland), 1e-14);
+  const double e = kernel_gradient_error(2, 0.5, 0.5, 1.2, Case::UNREFINED, 1e-5, 256, wendland).value;
+  EXPECT_GT(e, 1e-3);
+  EXPECT_NE(e, kernel_gradient_error(2, 0.5, 0.5, 1.2, Case::UNREFINED).value);
+}

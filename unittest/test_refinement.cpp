@@ -141,20 +141,30 @@ TEST_F(Refinement, SplitsConserveMassMomentumEnergyAndAngularMomentum)
   }
 }
 
+// with every kernel of the pair style (the interpolation uses it)
 TEST_F(Refinement, CspmKeepsAConstantStateExactly)
 {
-  patch(2, 10, true);
-  HIDE_OUTPUT([&] {
-    command("sph_soil/set all stress -3000 -2000 -2500 400 0 0 strain 0.01 -0.02 0 0.005 0 0 density 2700");
-    command("sph_soil/refine all separation 0.55 smoothing 0.5");
-  });
-  const double stress[6] = {-3000, -2000, -2500, 400, 0, 0}, strain[6] = {0.01, -0.02, 0, 0.005, 0, 0};
-  for (const auto &entry : gather_state(lmp)) {
-    const auto &s = entry.second;
-    EXPECT_NEAR(s[9], 2700.0, 1e-12 * 2700.0);
-    for (int k = 0; k < 6; k++) {
-      EXPECT_NEAR(s[11 + k], stress[k], 1e-12 * 3000.0) << "stress " << k;
-      EXPECT_NEAR(s[17 + k], strain[k], 1e-15) << "strain " << k;
+  for (const char *kernel : {"cubic", "wendland2"}) {
+    HIDE_OUTPUT([&] {
+      command("clear");
+      command("units si");
+    });
+    patch(2, 10, true);
+    HIDE_OUTPUT([&] {
+      command(std::string("pair_style sph/soil kernel ") + kernel);
+      command(SOIL);
+      command("sph_soil/set all stress -3000 -2000 -2500 400 0 0 strain 0.01 -0.02 0 0.005 0 0 density 2700");
+      command("sph_soil/refine all separation 0.55 smoothing 0.5");
+    });
+    ASSERT_EQ(lmp->atom->natoms, 400) << kernel;
+    const double stress[6] = {-3000, -2000, -2500, 400, 0, 0}, strain[6] = {0.01, -0.02, 0, 0.005, 0, 0};
+    for (const auto &entry : gather_state(lmp)) {
+      const auto &s = entry.second;
+      EXPECT_NEAR(s[9], 2700.0, 1e-12 * 2700.0) << kernel;
+      for (int k = 0; k < 6; k++) {
+        EXPECT_NEAR(s[11 + k], stress[k], 1e-12 * 3000.0) << kernel << " stress " << k;
+        EXPECT_NEAR(s[17 + k], strain[k], 1e-15) << kernel << " strain " << k;
+      }
     }
   }
 }

@@ -81,6 +81,39 @@ TEST_F(SoilPhysics, PeriodicPatchConservesMassAndMomentum)
 
 // the same physics on 1, 2 and 4 ranks: test_parallel.cpp
 
+// pair_style sph/soil kernel wendland2: a run with the Wendland C2 kernel conserves mass and
+// momentum, and is not the cubic spline's run
+TEST_F(SoilPhysics, WendlandKernelRunConservesMomentum)
+{
+  HIDE_OUTPUT([&] { command("variable vx atom 0.02*sin(2*PI*y/0.16)"); });
+  periodic_patch();
+  soil_run_setup();
+  HIDE_OUTPUT([&] {
+    command("pair_style sph/soil kernel wendland2");
+    command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
+  });
+  auto pair = dynamic_cast<LAMMPS_NS::PairSPHSoil *>(lmp->force->pair);
+  ASSERT_NE(pair, nullptr);
+  EXPECT_EQ(pair->kernel_kind(), SPHSoil::KernelKind::wendland2);
+  auto before = totals();
+  HIDE_OUTPUT([&] { command("run 500 post no"); });
+  auto after = totals();
+  EXPECT_EQ(after[0], before[0]);
+  const double scale = before[0] * 0.02;
+  for (int k = 1; k <= 3; k++) EXPECT_NEAR(after[k], before[k], 1e-12 * scale) << "component " << k;
+  const double wendland_energy = after[7];
+
+  HIDE_OUTPUT([&] {
+    command("clear");
+    command("units si");
+    command("variable vx atom 0.02*sin(2*PI*y/0.16)");
+  });
+  periodic_patch();
+  soil_run_setup();
+  HIDE_OUTPUT([&] { command("run 500 post no"); });
+  EXPECT_NE(totals()[7], wendland_energy);
+}
+
 TEST_F(SoilPhysics, RestartAndSplitRunsContinueIdentically)
 {
   // uninterrupted: run 200; split: run 100, write_restart, new instance, read_restart, run 100

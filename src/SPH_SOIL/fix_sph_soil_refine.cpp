@@ -228,10 +228,14 @@ void FixSPHSoilRefine::report_parameters()
   using namespace SPHSoil;
   const double eps = splitter->separation, alpha = splitter->smoothing_ratio;
   const int dimension = domain->dimension;
-  const double error_a = kernel_gradient_error(dimension, eps, alpha, ra_all, NeighbourSmoothing::UNREFINED).value;
-  const double error_b = kernel_gradient_error(dimension, eps, alpha, ra_all, NeighbourSmoothing::REFINED).value;
+  const KernelKind kernel = splitter->kernel_kind();
+  const double inflection = kernel_inflection(kernel);
+  const double error_a =
+      kernel_gradient_error(dimension, eps, alpha, ra_all, NeighbourSmoothing::UNREFINED, 1.0e-5, 256, kernel).value;
+  const double error_b =
+      kernel_gradient_error(dimension, eps, alpha, ra_all, NeighbourSmoothing::REFINED, 1.0e-5, 256, kernel).value;
   auto describe = [&](double distance) {
-    const auto c = instability_conditions(eps, alpha, ra_all, distance);
+    const auto c = instability_conditions(eps, alpha, ra_all, distance, inflection);
     if (!c.any()) return std::string("stable");
     std::string s = "unstable (Cond.";
     if (c.daughters_too_close) s += " 1";
@@ -243,9 +247,10 @@ void FixSPHSoilRefine::report_parameters()
                  maxlevel);
   utils::logmesg(lmp, "fix sph/soil/refine: separation {} smoothing {} with h/d = {:.4g}: kernel "
                       "gradient error E_a = {:.4g}, E_b = {:.4g} (1/d^{}); d_ij/d_ref = 1.0: {}, "
-                      "0.85: {}\n", eps, alpha, ra_all, error_a, error_b, dimension,
-                 describe(1.0), describe(0.85));
-  if (!stable_refinement(eps, alpha, ra_all, 1.0))
+                      "0.85: {}{}\n", eps, alpha, ra_all, error_a, error_b, dimension,
+                 describe(1.0), describe(0.85),
+                 kernel == KernelKind::cubic ? "" : std::string(" (kernel ") + kernel_name(kernel) + ")");
+  if (!stable_refinement(eps, alpha, ra_all, 1.0, inflection))
     error->warning(FLERR, "Fix sph/soil/refine: separation {} and smoothing {} (h/d = {:.4g}) are "
                           "in the unstable region for d_ij/d_ref = 1.0 ({}): expect clumps and "
                           "cracks under compression; see doc/refinement_parameters.rst",

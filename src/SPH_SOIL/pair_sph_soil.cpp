@@ -13,7 +13,7 @@
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
-#include "soil_kernel.h"
+#include "soil_kernels.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
@@ -24,14 +24,13 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
-using SPHSoil::CubicSpline;
 using SPHSoil::SoilMaterial;
 
 /* ---------------------------------------------------------------------- */
 
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1), free_slip(false),
-    drucker_prager_fit(SPHSoil::DruckerPragerFit::associated),
+    drucker_prager_fit(SPHSoil::DruckerPragerFit::associated), kernel(SPHSoil::KernelKind::cubic),
     sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), warned_density(false),
     warned_spacing(false), warned_coinciding(false), nmax_packed(0),
     packed(nullptr), sums(nullptr)
@@ -81,6 +80,7 @@ void PairSPHSoil::settings(int narg, char **arg)
   viscosity_alpha = viscosity_beta = 0.1;
   free_slip = false;
   drucker_prager_fit = SPHSoil::DruckerPragerFit::associated;
+  kernel = SPHSoil::KernelKind::cubic;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style sph/soil command: keyword {} needs a value", arg[iarg]);
@@ -104,9 +104,13 @@ void PairSPHSoil::settings(int narg, char **arg)
       else
         error->all(FLERR, "Illegal pair_style sph/soil fit {}: must be associated or nonassociated",
                    arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "kernel") == 0) {
+      if (!SPHSoil::kernel_kind(arg[iarg + 1], kernel))
+        error->all(FLERR, "Illegal pair_style sph/soil kernel {}: must be one of {}", arg[iarg + 1],
+                   SPHSoil::KERNEL_NAMES);
     } else {
-      error->all(FLERR, "Illegal pair_style sph/soil keyword {} (allowed: alpha, beta, wall, fit)",
-                 arg[iarg]);
+      error->all(FLERR, "Illegal pair_style sph/soil keyword {} (allowed: alpha, beta, wall, fit, "
+                        "kernel)", arg[iarg]);
     }
   }
 }
@@ -410,7 +414,7 @@ double PairSPHSoil::init_one(int i, int j)
   const double ci = mi.wall ? mj.wave_speed() : mi.wave_speed();
   const double cj = mj.wall ? mi.wave_speed() : mj.wave_speed();
   sound_speed_ij[i][j] = sound_speed_ij[j][i] = 0.5 * (ci + cj);
-  return CubicSpline::SUPPORT * max_h;
+  return SPHSoil::kernel_support(kernel) * max_h;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -439,8 +443,7 @@ void PairSPHSoil::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (!warned_coinciding) warn_coinciding();
-  if (domain->dimension == 2) eval<2>();
-  else eval<3>();
+  SPHSoil::with_kernel(kernel, Evaluate{this, domain->dimension});
 }
 
 /* ----------------------------------------------------------------------
@@ -513,7 +516,7 @@ template <int DIMENSION> void PairSPHSoil::unpack_sums()
    communication (the atom style carries drho, strain rate and spin back)
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION> void PairSPHSoil::eval()
+template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
 {
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
@@ -594,7 +597,8 @@ template <int DIMENSION> void PairSPHSoil::eval()
                       DIMENSION == 3 ? xi[2] - pj[P_X + 2] : 0.0};
       const double r2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
       const double hij = 0.5 * (hi + pj[P_H]);
-      if (r2 >= 4.0 * hij * hij) continue;
+      constexpr double SUPPORT2 = Kernel::SUPPORT * Kernel::SUPPORT;
+      if (r2 >= SUPPORT2 * hij * hij) continue;
 
       // the square root and the two divisions are independent of each other, so that the
       // processor overlaps them; at r = 0 (coinciding particles) the gradient is 0 whatever
@@ -603,7 +607,7 @@ template <int DIMENSION> void PairSPHSoil::eval()
       const double inv_h = 1.0 / hij;
       const double inv_r2 = r2 > 0.0 ? 1.0 / r2 : 0.0;
       const double factor =
-          CubicSpline::gradient_factor_from_inverse<DIMENSION>(r, inv_h, hij * r * inv_r2);
+          Kernel::template gradient_factor_from_inverse<DIMENSION>(r, inv_h, hij * r * inv_r2);
       const double c_ij = c_type[itype][jtype];
 
       if (!wall_i && !wall_j) {
@@ -719,5 +723,7 @@ template <int DIMENSION> void PairSPHSoil::eval()
   unpack_sums<DIMENSION>();
 }
 
-template void PairSPHSoil::eval<2>();
-template void PairSPHSoil::eval<3>();
+template void PairSPHSoil::eval<2, SPHSoil::CubicSpline>();
+template void PairSPHSoil::eval<3, SPHSoil::CubicSpline>();
+template void PairSPHSoil::eval<2, SPHSoil::WendlandC2>();
+template void PairSPHSoil::eval<3, SPHSoil::WendlandC2>();

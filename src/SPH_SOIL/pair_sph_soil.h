@@ -20,6 +20,7 @@ PairStyle(sph/soil,PairSPHSoil);
 
 #include "pair.h"
 #include "soil_constitutive.h"
+#include "soil_kernels.h"
 #include "soil_material.h"
 
 #include <memory>
@@ -45,11 +46,13 @@ class PairSPHSoil : public Pair {
   // constitutive model of a soil type, nullptr for wall types and types without material
   const SPHSoil::ConstitutiveModel *model(int type) const { return models[type].get(); }
   double max_wave_speed() const;
+  SPHSoil::KernelKind kernel_kind() const { return kernel; }
 
  protected:
   double viscosity_alpha, viscosity_beta;    // Monaghan artificial viscosity
   bool free_slip;                            // walls: reverse only the normal velocity
   SPHSoil::DruckerPragerFit drucker_prager_fit;    // plane-strain fit to Mohr-Coulomb
+  SPHSoil::KernelKind kernel;                      // the pair loop is compiled once per kernel
   std::vector<SPHSoil::SoilMaterial> materials;    // per atom type, index 1..ntypes
   std::vector<int> type_set;                       // 1 once pair_coeff gave the type a material
   std::vector<int> type_is_wall;                   // per type, for the pair loop
@@ -79,7 +82,17 @@ class PairSPHSoil : public Pair {
   void allocate();
   void set_type_material(int type, const SPHSoil::SoilMaterial &material);
   void read_material_file(const char *file, std::vector<SPHSoil::SoilMaterial> &list);
-  template <int DIMENSION> void eval();
+  template <int DIMENSION, class Kernel> void eval();
+  // with_kernel() calls it with the kernel type: picks the dimension
+  struct Evaluate {
+    PairSPHSoil *pair;
+    int dimension;
+    template <class Kernel> void operator()() const
+    {
+      if (dimension == 2) pair->eval<2, Kernel>();
+      else pair->eval<3, Kernel>();
+    }
+  };
 };
 
 }    // namespace LAMMPS_NS

@@ -16,7 +16,11 @@
 namespace SPHSoil {
 
 struct CubicSpline {
+  static constexpr const char *NAME = "cubic";
   static constexpr double SUPPORT = 2.0;    // support radius in units of h
+  // q = r/h below which W'' < 0: pairs closer than INFLECTION * h are unstable under
+  // compression (Swegle et al. 1995; doc/theory.rst section 5.6)
+  static constexpr double INFLECTION = 2.0 / 3.0;
 
   // normalisation C / h^D
   static inline double norm(int dimension, double h)

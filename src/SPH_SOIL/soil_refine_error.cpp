@@ -4,7 +4,6 @@
 
 #include "soil_refine_error.h"
 
-#include "soil_kernel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +19,7 @@ const double GAUSS_W[4] = {0.3478548451374538, 0.6521451548625461, 0.65214515486
                            0.3478548451374538};
 
 struct Split {
+  KernelKind kernel;
   int dimension;
   double eps, alpha, ra;
   double h_parent, h_daughter;    // symmetrized with h(x)
@@ -27,9 +27,11 @@ struct Split {
   double daughters[8][3];
 };
 
-Split make_split(int dimension, double eps, double alpha, double ra, NeighbourSmoothing neighbours)
+Split make_split(int dimension, double eps, double alpha, double ra, NeighbourSmoothing neighbours,
+                 KernelKind kernel)
 {
   Split s;
+  s.kernel = kernel;
   s.dimension = dimension;
   s.eps = eps;
   s.alpha = alpha;
@@ -50,7 +52,7 @@ double difference_squared(const Split &s, const double *x)
   double diff[3] = {0.0, 0.0, 0.0};
   const int D = s.dimension;
   const double r0 = std::sqrt(x[0] * x[0] + x[1] * x[1] + (D == 3 ? x[2] * x[2] : 0.0));
-  const double fp = CubicSpline::gradient_factor(D, r0, s.h_parent);
+  const double fp = kernel_gradient_factor(s.kernel, D, r0, s.h_parent);
   for (int a = 0; a < D; a++) diff[a] = fp * x[a];
   const double lambda = 1.0 / s.ndaughters;
   for (int d = 0; d < s.ndaughters; d++) {
@@ -59,7 +61,7 @@ double difference_squared(const Split &s, const double *x)
       dx[a] = x[a] - s.daughters[d][a];
       r2 += dx[a] * dx[a];
     }
-    const double fd = lambda * CubicSpline::gradient_factor(D, std::sqrt(r2), s.h_daughter);
+    const double fd = lambda * kernel_gradient_factor(s.kernel, D, std::sqrt(r2), s.h_daughter);
     for (int a = 0; a < D; a++) diff[a] -= fd * dx[a];
   }
   double sum = 0.0;
@@ -102,23 +104,26 @@ double integrate(const Split &s, int cells)
 
 double SPHSoil::gradient_difference_squared(int dimension, double separation,
                                             double smoothing_ratio, double r_a,
-                                            NeighbourSmoothing neighbours, const double *x)
+                                            NeighbourSmoothing neighbours, const double *x,
+                                            KernelKind kernel)
 {
-  return difference_squared(make_split(dimension, separation, smoothing_ratio, r_a, neighbours), x);
+  return difference_squared(make_split(dimension, separation, smoothing_ratio, r_a, neighbours, kernel), x);
 }
 
 double SPHSoil::kernel_gradient_error_fixed(int dimension, double separation, double smoothing_ratio,
-                                            double r_a, NeighbourSmoothing neighbours, int cells)
+                                            double r_a, NeighbourSmoothing neighbours, int cells,
+                                            KernelKind kernel)
 {
-  return integrate(make_split(dimension, separation, smoothing_ratio, r_a, neighbours), cells);
+  return integrate(make_split(dimension, separation, smoothing_ratio, r_a, neighbours, kernel), cells);
 }
 
 KernelGradientError SPHSoil::kernel_gradient_error(int dimension, double separation,
                                                    double smoothing_ratio, double r_a,
                                                    NeighbourSmoothing neighbours,
-                                                   double relative_tolerance, int max_cells)
+                                                   double relative_tolerance, int max_cells,
+                                                   KernelKind kernel)
 {
-  const Split s = make_split(dimension, separation, smoothing_ratio, r_a, neighbours);
+  const Split s = make_split(dimension, separation, smoothing_ratio, r_a, neighbours, kernel);
   // the integrand has kinks (W''' jumps) on spheres around every particle: the composite rule
   // converges algebraically, so the change under doubling the cells bounds the error
   int cells = dimension == 3 ? 8 : 16;
@@ -138,12 +143,15 @@ KernelGradientError SPHSoil::kernel_gradient_error(int dimension, double separat
 }
 
 InstabilityConditions SPHSoil::instability_conditions(double separation, double smoothing_ratio,
-                                                      double r_a, double neighbour_distance)
+                                                      double r_a, double neighbour_distance,
+                                                      double inflection)
 {
   InstabilityConditions c;
-  const double unstable_radius = 2.0 / 3.0 * smoothing_ratio * r_a;    // 2 h_d / 3 in d_ref
+  const double unstable_radius = inflection * smoothing_ratio * r_a;    // q* h_d in d_ref
   c.daughters_too_close = unstable_radius - separation > 0.0;
   c.refined_neighbours = neighbour_distance < unstable_radius + separation;
-  c.unrefined_neighbour = neighbour_distance < (1.0 + smoothing_ratio) * r_a / 3.0 + 0.5 * separation;
+  // a daughter (h_d) and an unrefined neighbour (h_p): h_ij = (1 + alpha_r) h_p / 2
+  c.unrefined_neighbour =
+      neighbour_distance < inflection * (1.0 + smoothing_ratio) * r_a / 2.0 + 0.5 * separation;
   return c;
 }

@@ -17,6 +17,8 @@
 #ifndef LMP_SOIL_REFINE_ERROR_H
 #define LMP_SOIL_REFINE_ERROR_H
 
+#include "soil_kernels.h"
+
 namespace SPHSoil {
 
 enum class NeighbourSmoothing {
@@ -35,32 +37,37 @@ struct KernelGradientError {
 // doubles until the relative change is below relative_tolerance (or max_cells is reached).
 KernelGradientError kernel_gradient_error(int dimension, double separation, double smoothing_ratio,
                                           double r_a, NeighbourSmoothing neighbours,
-                                          double relative_tolerance = 1.0e-5, int max_cells = 256);
+                                          double relative_tolerance = 1.0e-5, int max_cells = 256,
+                                          KernelKind kernel = KernelKind::cubic);
 
 // E on a fixed grid of cells per dimension (for convergence studies).
 double kernel_gradient_error_fixed(int dimension, double separation, double smoothing_ratio,
-                                   double r_a, NeighbourSmoothing neighbours, int cells);
+                                   double r_a, NeighbourSmoothing neighbours, int cells,
+                                   KernelKind kernel = KernelKind::cubic);
 
 // sum_a of the squared difference of the gradients at one point x (length `dimension`)
 double gradient_difference_squared(int dimension, double separation, double smoothing_ratio,
-                                   double r_a, NeighbourSmoothing neighbours, const double *x);
+                                   double r_a, NeighbourSmoothing neighbours, const double *x,
+                                   KernelKind kernel = KernelKind::cubic);
 
-// Swegle's criterion for the cubic spline (W'' < 0 for r < 2h/3) applied to a split, for a
-// refined particle i and a neighbour j at distance d_ij = neighbour_distance * d_ref:
+// Swegle's criterion (W'' < 0 for r < q* h, q* the kernel's INFLECTION: 2/3 for the cubic
+// spline, the paper's case, 1/2 for Wendland C2) applied to a split, for a refined particle i
+// and a neighbour j at distance d_ij = neighbour_distance * d_ref:
 struct InstabilityConditions {
-  bool daughters_too_close;        // Cond. 1: 0 < (2/3) alpha_r r_a - eps_r
-  bool refined_neighbours;         // Cond. 2: d_ij/d_ref < (2/3) alpha_r r_a + eps_r
-  bool unrefined_neighbour;        // Cond. 3: d_ij/d_ref < (1 + alpha_r) r_a / 3 + eps_r / 2
+  bool daughters_too_close;        // Cond. 1: 0 < q* alpha_r r_a - eps_r
+  bool refined_neighbours;         // Cond. 2: d_ij/d_ref < q* alpha_r r_a + eps_r
+  bool unrefined_neighbour;        // Cond. 3: d_ij/d_ref < q* (1 + alpha_r) r_a / 2 + eps_r / 2
   bool any() const { return daughters_too_close || refined_neighbours || unrefined_neighbour; }
 };
 
 InstabilityConditions instability_conditions(double separation, double smoothing_ratio, double r_a,
-                                             double neighbour_distance);
+                                             double neighbour_distance,
+                                             double inflection = CubicSpline::INFLECTION);
 
 inline bool stable_refinement(double separation, double smoothing_ratio, double r_a,
-                              double neighbour_distance)
+                              double neighbour_distance, double inflection = CubicSpline::INFLECTION)
 {
-  return !instability_conditions(separation, smoothing_ratio, r_a, neighbour_distance).any();
+  return !instability_conditions(separation, smoothing_ratio, r_a, neighbour_distance, inflection).any();
 }
 
 }    // namespace SPHSoil

@@ -14,7 +14,7 @@
 #ifndef LMP_SOIL_SPLIT_H
 #define LMP_SOIL_SPLIT_H
 
-#include "soil_kernel.h"
+#include "soil_kernels.h"
 
 #include <cmath>
 
@@ -51,15 +51,18 @@ inline double level_spacing(double reference_spacing, int level)
   return std::ldexp(reference_spacing, -level);
 }
 
-// Running CSPM sums for one point: add neighbours one by one, then divide.
+// Running CSPM sums for one point with the kernel of `kernel`: add neighbours one by one, then
+// divide.
 template <int NVALUES> struct CspmSum {
+  explicit CspmSum(KernelKind kernel = KernelKind::cubic) : kernel(kernel) {}
+  KernelKind kernel;
   double weight = 0.0;
   double values[NVALUES] = {};
 
   // a neighbour of volume V at distance r with smoothing length h and state f[NVALUES]
   void add(int dimension, double volume, double r, double h, const double *f)
   {
-    const double w = volume * CubicSpline::value(dimension, r, h);
+    const double w = volume * kernel_value(kernel, dimension, r, h);
     if (w == 0.0) return;
     weight += w;
     for (int k = 0; k < NVALUES; k++) values[k] += w * f[k];

@@ -42,6 +42,13 @@ constexpr const char *SPHSoilSplitter::KEYWORDS;
 
 /* ---------------------------------------------------------------------- */
 
+SPHSoil::KernelKind SPHSoilSplitter::kernel_kind() const
+{
+  return pair->kernel_kind();
+}
+
+/* ---------------------------------------------------------------------- */
+
 bool SPHSoilSplitter::parse_keyword(const std::string &command, const std::string &keyword,
                                     const char *value)
 {
@@ -96,7 +103,7 @@ void SPHSoilSplitter::interpolate(int parent, const double *position, NeighList 
   const int *type = atom->type;
   const int itype = type[parent];
 
-  CspmSum<NSTATE> sum;
+  CspmSum<NSTATE> sum(pair->kernel_kind());
   auto add = [&](int j) {
     const double dx = position[0] - x[j][0], dy = position[1] - x[j][1],
                  dz = position[2] - x[j][2];

@@ -13,6 +13,7 @@
 #define LMP_SPH_SOIL_SPLITTER_H
 
 #include "pointers.h"
+#include "soil_kernels.h"
 
 #include <string>
 #include <vector>
@@ -37,6 +38,8 @@ class SPHSoilSplitter : protected Pointers {
 
   // the pair style and atom style this run uses (call at init)
   void init();
+  // the pair style's kernel (after init)
+  SPHSoil::KernelKind kernel_kind() const;
   // spacing d_p of owned particle i
   double spacing(int i) const;
   // ratio h / d of owned particle i, the r_a of the refinement analysis
