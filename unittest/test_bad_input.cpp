@@ -135,7 +135,7 @@ std::vector<BadInput> cases()
 
   // ---- pair_style sph/soil
   error("PairUnknownKeyword", "patch", {}, "pair_style sph/soil gamma 1",
-        "Illegal pair_style sph/soil keyword gamma (allowed: alpha, beta, wall, fit, kernel)");
+        "Illegal pair_style sph/soil keyword gamma (allowed: alpha, beta, wall, kernel)");
   error("PairKernel", "patch", {}, "pair_style sph/soil kernel gaussian",
         "Illegal pair_style sph/soil kernel gaussian: must be one of cubic, wendland2");
   error("PairKeywordWithoutValue", "patch", {}, "pair_style sph/soil alpha",
@@ -148,34 +148,48 @@ std::vector<BadInput> cases()
         "Illegal pair_style sph/soil beta -0.5: must be >= 0");
   error("PairWall", "patch", {}, "pair_style sph/soil wall sticky",
         "Illegal pair_style sph/soil wall sticky: must be noslip or freeslip");
-  error("PairFit", "patch", {}, "pair_style sph/soil fit tresca",
-        "Illegal pair_style sph/soil fit tresca: must be associated or nonassociated");
+  error("PairFitMoved", "patch", {}, "pair_style sph/soil fit associated",
+        "Illegal pair_style sph/soil keyword fit: the Drucker-Prager fit is now a parameter of the "
+        "material ('soil rho0 drucker_prager K nu phi psi c fit associated' in pair_coeff or a material "
+        "file); by default it is the fit exact for the dilatancy angle");
 
   // ---- pair_coeff: materials on the command line and in files
   error("CoeffTooFewArguments", "patch", {}, "pair_coeff 1 1",
-        "Incorrect args for pair_coeff sph/soil: expected 'I I soil rho0 K nu phi psi c', 'I I wall' "
-        "or '* * file name1 ... name2'");
+        "Incorrect args for pair_coeff sph/soil: expected 'I I soil rho0 model parameters' (models: "
+        "drucker_prager, mohr_coulomb), 'I I wall' or '* * file name1 ... name2'");
   error("CoeffSoilParameterCount", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0",
-        "Incorrect args for pair_coeff sph/soil: material of type(s) 1: 'soil' needs 6 parameters "
-        "(rho0 K nu phi psi c), got 5");
+        "Incorrect args for pair_coeff sph/soil: material of type(s) 1: drucker_prager needs 5 "
+        "parameters (K nu phi psi c), got 4");
+  error("CoeffUnknownModel", "patch", {}, "pair_coeff 1 1 soil 2650 cam_clay 0.7e6 0.3 19.8 0 0",
+        "Incorrect args for pair_coeff sph/soil: material of type(s) 1: unknown model 'cam_clay' "
+        "(allowed: drucker_prager, mohr_coulomb)");
+  error("CoeffMohrCoulombOption", "patch", {},
+        "pair_coeff 1 1 soil 2650 mohr_coulomb 0.7e6 0.3 19.8 0 0 fit exact",
+        "material of type(s) 1: mohr_coulomb takes 5 parameters (K nu phi psi c) and no options, got 'fit'");
+  error("CoeffFitValue", "patch", {},
+        "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 fit tresca",
+        "material of type(s) 1: drucker_prager fit 'tresca': must be exact, associated or nonassociated");
+  error("CoeffNoExactFit", "patch", {}, "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 15 0",
+        "material of type(s) 1: drucker_prager fit exact: no plane-strain fit is exact for dilatancy "
+        "angle psi = 15 degrees");
   error("CoeffDensity", "patch", {}, "pair_coeff 1 1 soil 0 0.7e6 0.3 19.8 0 0",
         "material of type(s) 1: density rho0 = 0 must be finite and > 0");
   error("CoeffBulkModulus", "patch", {}, "pair_coeff 1 1 soil 2650 -1 0.3 19.8 0 0",
-        "material of type(s) 1: bulk modulus K = -1 must be finite and > 0");
+        "material of type(s) 1: drucker_prager bulk modulus K = -1 must be finite and > 0");
   error("CoeffPoissonRatioHigh", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.5 19.8 0 0",
-        "material of type(s) 1: Poisson ratio nu = 0.5 must be in (-1, 0.5)");
+        "material of type(s) 1: drucker_prager Poisson ratio nu = 0.5 must be in (-1, 0.5)");
   error("CoeffPoissonRatioLow", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 -1 19.8 0 0",
-        "material of type(s) 1: Poisson ratio nu = -1 must be in (-1, 0.5)");
+        "material of type(s) 1: drucker_prager Poisson ratio nu = -1 must be in (-1, 0.5)");
   error("CoeffFrictionAngle", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 90 0 0",
-        "material of type(s) 1: friction angle phi = 90 must be in [0, 90) degrees");
+        "material of type(s) 1: drucker_prager friction angle phi = 90 must be in [0, 90) degrees");
   error("CoeffFrictionAngleNegative", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 -5 0 0",
-        "material of type(s) 1: friction angle phi = -5 must be in [0, 90) degrees");
+        "material of type(s) 1: drucker_prager friction angle phi = -5 must be in [0, 90) degrees");
   error("CoeffDilatancyAngle", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 25 0",
-        "material of type(s) 1: dilatancy angle psi = 25 must be in [0, phi = 19.8]");
+        "material of type(s) 1: drucker_prager dilatancy angle psi = 25 must be in [0, phi = 19.8]");
   error("CoeffCohesion", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 -1",
-        "material of type(s) 1: cohesion c = -1 must be finite and >= 0");
+        "material of type(s) 1: drucker_prager cohesion c = -1 must be finite and >= 0");
   error("CoeffInfinite", "patch", {}, "pair_coeff 1 1 soil 2650 1e400 0.3 19.8 0 0",
-        "material of type(s) 1: '1e400' is not a finite number");
+        "material of type(s) 1: drucker_prager parameter K: '1e400' is not a finite number");
   error("CoeffWallWithParameters", "patch", {}, "pair_coeff 2 2 wall 3",
         "material of type(s) 2: 'wall' takes no parameters, got 1");
   error("CoeffUnknownKind", "patch", {}, "pair_coeff 1 1 clay 2650 0.7e6 0.3 19.8 0 0",
@@ -191,8 +205,8 @@ std::vector<BadInput> cases()
   error("FileNameNotInFile", "patch", {}, "pair_coeff * * good.soil granite rock",
         "pair_coeff sph/soil: material granite for atom type 1 is not in file good.soil");
   error("FileParameterCount", "patch", {}, "pair_coeff * * short.soil sand NULL",
-        "Invalid material file short.soil for pair_coeff sph/soil: line 2: material sand: 'soil' needs "
-        "6 parameters (rho0 K nu phi psi c), got 5");
+        "Invalid material file short.soil for pair_coeff sph/soil: line 2: material sand: "
+        "drucker_prager needs 5 parameters (K nu phi psi c), got 4");
   error("FileDefinedTwice", "patch", {}, "pair_coeff * * twice.soil sand sand",
         "Invalid material file twice.soil for pair_coeff sph/soil: line 2: material sand is defined twice");
   error("FileEmpty", "patch", {}, "pair_coeff * * empty.soil sand sand",
@@ -201,7 +215,8 @@ std::vector<BadInput> cases()
         "Invalid material file kind.soil for pair_coeff sph/soil: line 1: material sand: unknown kind "
         "'clay' (allowed: soil, wall)");
   error("FileNotANumber", "patch", {}, "pair_coeff * * word.soil sand sand",
-        "Invalid material file word.soil for pair_coeff sph/soil: line 1: material sand: 'forty-five' "
+        "Invalid material file word.soil for pair_coeff sph/soil: line 1: material sand: drucker_prager parameter phi: "
+        "'forty-five' "
         "is not a finite number");
 
   // ---- set-ups that a run rejects

@@ -1,7 +1,8 @@
 // Drucker-Prager soil model (doc/theory.rst section 3): Hooke's law inside the surface, objectivity of the
 // Jaumann terms, the flow rule and consistency on the surface, Bui's return mapping, simple shear.
-#include "soil_constitutive.h"
+#include "soil_drucker_prager.h"
 #include "soil_material.h"
+#include "soil_models.h"
 
 #include "gtest/gtest.h"
 
@@ -17,9 +18,12 @@ namespace {
 constexpr double PI = 3.14159265358979323846;
 typedef double Matrix[3][3];
 
-DruckerPragerParameters soil(double phi, double psi, double c, double bulk = 1.5e6, double nu = 0.3)
+// the associated fit unless told: it accepts every dilatancy angle (the exact fit has its own tests)
+DruckerPragerParameters soil(double phi, double psi, double c, double bulk = 1.5e6, double nu = 0.3,
+                             DruckerPragerFit fit = DruckerPragerFit::associated)
 {
   DruckerPragerParameters p;
+  p.fit = fit;
   p.bulk_modulus = bulk;
   p.poisson_ratio = nu;
   p.friction_angle = phi;
@@ -153,7 +157,7 @@ TEST(DruckerPrager, ConstantsModuliAndWaveSpeed)
   const DruckerPrager bars(soil(19.8, 0.0, 0.0, 0.7e6, 0.3));
   const double shear = 0.84e6 / (2.0 * 1.3);
   EXPECT_NEAR(bars.shear_modulus(), shear, 1.0e-9 * shear);
-  const DruckerPrager from_e(DruckerPragerParameters::from_young_modulus(0.84e6, 0.3, 19.8, 0.0, 0.0));
+  const DruckerPrager from_e(FrictionalParameters::from_young_modulus(0.84e6, 0.3, 19.8, 0.0, 0.0));
   EXPECT_NEAR(from_e.bulk_modulus(), 0.7e6, 1.0e-9 * 0.7e6);
   EXPECT_NEAR(from_e.shear_modulus(), shear, 1.0e-9 * shear);
   EXPECT_NEAR(bars.wave_speed(2650.0), std::sqrt((0.7e6 + 4.0 * shear / 3.0) / 2650.0), 1.0e-12);
@@ -238,36 +242,101 @@ TEST(DruckerPrager, CheckNamesTheParameterAndItsRange)
   expect_message(DruckerPrager::check(soil(30.0, -1.0, 0.0)), "dilatancy angle", "[0, phi = 30]");
   expect_message(DruckerPrager::check(soil(30.0, 0.0, -1.0)), "cohesion", ">= 0");
 
-  EXPECT_EQ(DruckerPrager::check_young_modulus(0.84e6, 0.3, 19.8, 0.0, 0.0), "");
-  expect_message(DruckerPrager::check_young_modulus(0.0, 0.3, 19.8, 0.0, 0.0), "Young's modulus", "> 0");
+  EXPECT_EQ(FrictionalParameters::check_young_modulus(0.84e6, 0.3, 19.8, 0.0, 0.0), "");
+  expect_message(FrictionalParameters::check_young_modulus(0.0, 0.3, 19.8, 0.0, 0.0), "Young's modulus", "> 0");
   // a bad nu is reported as such, not as the K it would produce
-  expect_message(DruckerPrager::check_young_modulus(1.0e6, 0.6, 19.8, 0.0, 0.0), "Poisson ratio", "(-1, 0.5)");
-  expect_message(DruckerPrager::check_young_modulus(1.0e6, 0.3, 19.8, 25.0, 0.0), "dilatancy angle", "[0, phi");
+  expect_message(FrictionalParameters::check_young_modulus(1.0e6, 0.6, 19.8, 0.0, 0.0), "Poisson ratio", "(-1, 0.5)");
+  expect_message(FrictionalParameters::check_young_modulus(1.0e6, 0.3, 19.8, 25.0, 0.0), "dilatancy angle", "[0, phi");
 
   EXPECT_THROW(DruckerPrager model(soil(30.0, 0.0, 0.0, 1.0e6, 0.5)), std::invalid_argument);
 }
 
-TEST(DruckerPrager, FactoryBuildsTheModelOfASoilMaterialAndNoneForAWall)
+TEST(DruckerPrager, RegistryBuildsItFromTheWordsOfAMaterialLine)
 {
-  SoilMaterial sand;
-  sand.density = 1850.0;
-  sand.bulk_modulus = 1.5e6;
-  sand.poisson_ratio = 0.3;
-  sand.friction_angle = 45.0;
-  sand.dilatancy_angle = 0.0;
-  sand.cohesion = 0.0;
-  const auto model = make_constitutive_model(sand);
-  ASSERT_TRUE(model);
+  std::string error;
+  const auto model = make_model("drucker_prager", {"1.5e6", "0.3", "45", "0", "0"}, error);
+  ASSERT_TRUE(model) << error;
+  EXPECT_STREQ(model->keyword(), "drucker_prager");
   const double shear = 3.0 * 1.5e6 * 0.4 / 2.6;
   EXPECT_NEAR(model->wave_speed(1850.0), std::sqrt((1.5e6 + 4.0 * shear / 3.0) / 1850.0), 1.0e-12);
-  const double on_surface[6] = {-3.0e4, -3.0e4, -3.0e4, 0.0, 0.0, 0.0};
-  EXPECT_LT(model->yield_function(on_surface), 0.0);
+  const double inside[6] = {-3.0e4, -3.0e4, -3.0e4, 0.0, 0.0, 0.0};
+  EXPECT_LT(model->yield_function(inside), 0.0);
+  const auto *dp = dynamic_cast<const DruckerPrager *>(model.get());
+  ASSERT_TRUE(dp);
+  EXPECT_TRUE(dp->parameters().fit == DruckerPragerFit::exact);
 
-  SoilMaterial wall;
-  wall.wall = true;
-  EXPECT_FALSE(make_constitutive_model(wall));
-  sand.poisson_ratio = 0.5;
-  EXPECT_THROW(make_constitutive_model(sand), std::invalid_argument);
+  const auto associated =
+      make_model("drucker_prager", {"1.5e6", "0.3", "45", "0", "0", "fit", "associated"}, error);
+  ASSERT_TRUE(associated) << error;
+  EXPECT_TRUE(dynamic_cast<const DruckerPrager &>(*associated).parameters().fit ==
+              DruckerPragerFit::associated);
+
+  auto fails = [](std::vector<std::string> words, const std::string &message) {
+    std::string why;
+    EXPECT_FALSE(make_model("drucker_prager", words, why));
+    EXPECT_EQ(why, message);
+  };
+  fails({"1.5e6", "0.3", "45", "0"}, "drucker_prager needs 5 parameters (K nu phi psi c), got 4");
+  fails({"1.5e6", "0.5", "45", "0", "0"}, "drucker_prager Poisson ratio nu = 0.5 must be in (-1, 0.5)");
+  fails({"1.5e6", "x", "45", "0", "0"}, "drucker_prager parameter nu: 'x' is not a finite number");
+  fails({"1.5e6", "0.3", "45", "0", "0", "fit", "tresca"},
+        "drucker_prager fit 'tresca': must be exact, associated or nonassociated");
+  fails({"1.5e6", "0.3", "45", "0", "0", "fit"},
+        "drucker_prager fit '': must be exact, associated or nonassociated");
+  fails({"1.5e6", "0.3", "45", "0", "0", "hardening", "1"},
+        "drucker_prager: unknown option 'hardening' (allowed: fit)");
+  fails({"1.5e6", "0.3", "45", "20", "0"},
+        "drucker_prager fit exact: no plane-strain fit is exact for dilatancy angle psi = 20 "
+        "degrees: the flow potential sqrt(J2) + 3 sin(psi) I1 allows plastic flow in plane strain "
+        "only for psi in [0, 11.0958) degrees; choose 'fit associated' or 'fit nonassociated'");
+  EXPECT_FALSE(make_model("cam_clay", {}, error));
+  EXPECT_EQ(error, "unknown model 'cam_clay' (allowed: drucker_prager, mohr_coulomb)");
+}
+
+// The default fit is exact for the dilatancy angle: psi = 0 gives the nonassociated fit to the
+// last bit. For psi > 0, plane-strain plastic flow (epsdot^p_zz = 0) needs s_zz = -2 beta sqrt(J2),
+// beta = 3 sin(psi); a stress with that s_zz and Mohr-Coulomb's in-plane strength
+// tau = c cos(phi) - sigma_m sin(phi) must lie on the surface. The associated fit passes the same
+// test with beta = alpha_phi (flow potential = yield function).
+TEST(DruckerPrager, ExactFitIsMohrCoulombForTheFlowRulesPlaneStrainFlow)
+{
+  for (double phi : {19.8, 30.0, 45.0}) {
+    const DruckerPrager exact(soil(phi, 0.0, 1.0e4, 1.5e6, 0.3, DruckerPragerFit::exact));
+    const DruckerPrager nonassociated(soil(phi, 0.0, 1.0e4, 1.5e6, 0.3, DruckerPragerFit::nonassociated));
+    EXPECT_EQ(exact.alpha_phi(), nonassociated.alpha_phi());
+    EXPECT_EQ(exact.k_c(), nonassociated.k_c());
+  }
+  auto surface_stress = [](double phi, double c, double beta, double mean, double stress[6]) {
+    const double tau = c * std::cos(phi * PI / 180.0) - mean * std::sin(phi * PI / 180.0);
+    const double root_j2 = tau / std::sqrt(1.0 - 3.0 * beta * beta);
+    const double szz = -2.0 * beta * root_j2;
+    stress[0] = mean + tau;
+    stress[1] = mean - tau;
+    stress[2] = mean + 1.5 * szz;
+    stress[3] = stress[4] = stress[5] = 0.0;
+  };
+  for (double phi : {10.0, 19.8, 30.0, 45.0})
+    for (double psi : {0.0, 2.0, 5.0, 10.0, 11.0}) {
+      if (psi > phi) continue;
+      const double c = 1.0e4, mean = -5.0e4;
+      const DruckerPrager model(soil(phi, psi, c, 1.5e6, 0.3, DruckerPragerFit::exact));
+      double stress[6];
+      surface_stress(phi, c, 3.0 * std::sin(psi * PI / 180.0), mean, stress);
+      EXPECT_NEAR(model.yield_function(stress) / (c - mean), 0.0, 1.0e-13) << phi << " " << psi;
+      // the flow rule's out-of-plane plastic strain rate vanishes there: s_zz/(2 sqrt J2) + beta
+      const double s_zz = stress[2] - mean_stress(stress);
+      EXPECT_NEAR(s_zz / (2.0 * sqrt_j2(stress)) + 3.0 * std::sin(psi * PI / 180.0), 0.0, 1.0e-13);
+    }
+  for (double phi : {10.0, 19.8, 30.0, 45.0}) {
+    const DruckerPrager model(soil(phi, phi, 1.0e4));
+    double stress[6];
+    surface_stress(phi, 1.0e4, model.alpha_phi(), -5.0e4, stress);
+    EXPECT_NEAR(model.yield_function(stress) / 6.0e4, 0.0, 1.0e-13) << phi;
+  }
+  // psi = 11.0958 is the limit; just below it the fit exists, just above it does not
+  EXPECT_EQ(DruckerPrager::check(soil(30.0, 11.09, 0.0, 1.5e6, 0.3, DruckerPragerFit::exact)), "");
+  EXPECT_NE(DruckerPrager::check(soil(30.0, 11.1, 0.0, 1.5e6, 0.3, DruckerPragerFit::exact)), "");
+  EXPECT_NEAR(DruckerPrager::largest_exact_dilatancy(), 11.0958, 1.0e-4);
 }
 
 // Far inside the surface the rate is Hooke's law; on the surface under unloading too.

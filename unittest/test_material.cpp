@@ -1,5 +1,6 @@
 // Material files of pair_style sph/soil: parsing, and the messages for bad entries.
-#include "soil_constitutive.h"
+#include "soil_drucker_prager.h"
+#include "soil_mohr_coulomb.h"
 #include "soil_material.h"
 
 #include "gmock/gmock.h"
@@ -11,63 +12,91 @@
 using namespace SPHSoil;
 using ::testing::HasSubstr;
 
+namespace {
+const DruckerPragerParameters &drucker_prager(const SoilMaterial &material)
+{
+  return dynamic_cast<const DruckerPrager &>(*material.model).parameters();
+}
+}    // namespace
+
 TEST(MaterialFile, ParsesSoilAndWallEntriesWithComments)
 {
   std::vector<SoilMaterial> list;
   std::string error;
-  ASSERT_TRUE(parse_material_file("# comment\n\nbars soil 2650 0.7e6 0.3 19.8 0 0  # trailing\n"
-                                  "floor wall\n",
+  ASSERT_TRUE(parse_material_file("# comment\n\nbars soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0  # trailing\n"
+                                  "floor wall\n"
+                                  "rock soil 2000 mohr_coulomb 1e7 0.25 35 5 1e4\n"
+                                  "bars_bui soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 fit associated\n",
                                   list, error))
       << error;
-  ASSERT_EQ(list.size(), 2u);
+  ASSERT_EQ(list.size(), 4u);
   EXPECT_EQ(list[0].name, "bars");
-  EXPECT_FALSE(list[0].wall);
+  EXPECT_FALSE(list[0].is_wall());
   EXPECT_EQ(list[0].density, 2650.0);
-  EXPECT_EQ(list[0].bulk_modulus, 0.7e6);
-  EXPECT_EQ(list[0].friction_angle, 19.8);
-  EXPECT_TRUE(list[1].wall);
+  EXPECT_STREQ(list[0].model->keyword(), "drucker_prager");
+  EXPECT_EQ(drucker_prager(list[0]).bulk_modulus, 0.7e6);
+  EXPECT_EQ(drucker_prager(list[0]).friction_angle, 19.8);
+  EXPECT_TRUE(drucker_prager(list[0]).fit == DruckerPragerFit::exact);
+  EXPECT_TRUE(list[1].is_wall());
+  EXPECT_EQ(list[1].wave_speed(), 0.0);
+  EXPECT_STREQ(list[2].model->keyword(), "mohr_coulomb");
+  EXPECT_EQ(dynamic_cast<const MohrCoulomb &>(*list[2].model).parameters().dilatancy_angle, 5.0);
+  EXPECT_TRUE(drucker_prager(list[3]).fit == DruckerPragerFit::associated);
   // the shipped file reads, with the paper's materials
   std::ifstream shipped(SPH_SOIL_TEST_POTENTIALS "/bui2008.soil");
   std::stringstream text;
   text << shipped.rdbuf();
   ASSERT_TRUE(parse_material_file(text.str(), list, error)) << error;
-  ASSERT_EQ(list.size(), 3u);
+  ASSERT_GE(list.size(), 3u);
   EXPECT_EQ(list[1].name, "sand");
-  EXPECT_EQ(list[1].friction_angle, 45.0);
+  EXPECT_EQ(drucker_prager(list[1]).friction_angle, 45.0);
   EXPECT_NEAR(list[0].wave_speed(), 20.66, 0.01);
 }
 
-TEST(MaterialFile, RejectsBadEntriesNamingLineAndParameter)
+// a line written before models had keywords (seven words) reads as Drucker-Prager, default fit
+TEST(MaterialFile, LineWithoutModelWordIsDruckerPrager)
+{
+  SoilMaterial old_line, new_line;
+  std::string error;
+  ASSERT_TRUE(material_from_words("bars", {"soil", "2650", "0.7e6", "0.3", "19.8", "0", "0"}, old_line, error))
+      << error;
+  ASSERT_TRUE(material_from_words("bars", {"soil", "2650", "drucker_prager", "0.7e6", "0.3", "19.8", "0", "0"},
+                                  new_line, error))
+      << error;
+  EXPECT_STREQ(old_line.model->keyword(), "drucker_prager");
+  const auto &a = dynamic_cast<const DruckerPrager &>(*old_line.model);
+  const auto &b = dynamic_cast<const DruckerPrager &>(*new_line.model);
+  EXPECT_EQ(a.alpha_phi(), b.alpha_phi());
+  EXPECT_EQ(a.k_c(), b.k_c());
+  EXPECT_EQ(old_line.wave_speed(), new_line.wave_speed());
+  EXPECT_EQ(old_line.wave_speed(), a.wave_speed(2650.0));
+}
+
+TEST(MaterialFile, RejectsBadEntriesNamingLineModelAndParameter)
 {
   std::vector<SoilMaterial> list;
   std::string error;
-  EXPECT_FALSE(parse_material_file("a soil 2650 0.7e6 0.3 19.8 0\n", list, error));
-  EXPECT_THAT(error, HasSubstr("line 1: material a: 'soil' needs 6 parameters"));
-  EXPECT_FALSE(parse_material_file("\na soil 2650 0.7e6 0.7 19.8 0 0\n", list, error));
-  EXPECT_THAT(error, HasSubstr("line 2: material a: Poisson ratio nu = 0.7 must be in (-1, 0.5)"));
-  EXPECT_FALSE(parse_material_file("a soil 2650 0.7e6 0.3 19.8 25 0\n", list, error));
-  EXPECT_THAT(error, HasSubstr("dilatancy angle psi = 25 must be in [0, phi = 19.8]"));
-  EXPECT_FALSE(parse_material_file("a soil -1 0.7e6 0.3 19.8 0 0\n", list, error));
-  EXPECT_THAT(error, HasSubstr("density rho0 = -1 must be finite and > 0"));
-  EXPECT_FALSE(parse_material_file("a soil 2650 abc 0.3 19.8 0 0\n", list, error));
-  EXPECT_THAT(error, HasSubstr("'abc' is not a finite number"));
-  EXPECT_FALSE(parse_material_file("a rock 1 2 3\n", list, error));
-  EXPECT_THAT(error, HasSubstr("unknown kind 'rock' (allowed: soil, wall)"));
-  EXPECT_FALSE(parse_material_file("w wall\nw wall\n", list, error));
-  EXPECT_THAT(error, HasSubstr("line 2: material w is defined twice"));
-  EXPECT_FALSE(parse_material_file("# nothing\n", list, error));
-  EXPECT_THAT(error, HasSubstr("no material defined"));
-}
-
-TEST(MaterialFile, FactoryBuildsTheModelOfASoil)
-{
-  SoilMaterial bars;
-  std::string error;
-  ASSERT_TRUE(material_from_words("bars", {"soil", "2650", "0.7e6", "0.3", "19.8", "0", "0"}, bars, error));
-  auto model = make_constitutive_model(bars);
-  ASSERT_NE(model, nullptr);
-  EXPECT_NEAR(model->wave_speed(bars.density), bars.wave_speed(), 1e-12);
-  SoilMaterial wall;
-  ASSERT_TRUE(material_from_words("w", {"wall"}, wall, error));
-  EXPECT_EQ(make_constitutive_model(wall), nullptr);
+  auto rejects = [&](const std::string &text, const std::string &message) {
+    EXPECT_FALSE(parse_material_file(text, list, error)) << text;
+    EXPECT_EQ(error, message);
+  };
+  rejects("a soil 2650 0.7e6 0.3 19.8 0\n",
+          "line 1: material a: drucker_prager needs 5 parameters (K nu phi psi c), got 4");
+  rejects("\na soil 2650 0.7e6 0.7 19.8 0 0\n",
+          "line 2: material a: drucker_prager Poisson ratio nu = 0.7 must be in (-1, 0.5)");
+  rejects("a soil 2650 mohr_coulomb 0.7e6 0.3 19.8 25 0\n",
+          "line 1: material a: mohr_coulomb dilatancy angle psi = 25 must be in [0, phi = 19.8] degrees");
+  rejects("a soil 2650 mohr_coulomb 0.7e6 0.3 19.8 0 0 fit associated\n",
+          "line 1: material a: mohr_coulomb takes 5 parameters (K nu phi psi c) and no options, got 'fit'");
+  rejects("a soil 2650 mohr_coulomb 0.7e6 0.3\n",
+          "line 1: material a: mohr_coulomb needs 5 parameters (K nu phi psi c), got 2");
+  rejects("a soil -1 0.7e6 0.3 19.8 0 0\n", "line 1: material a: density rho0 = -1 must be finite and > 0");
+  rejects("a soil 2650 drucker_prager 1e400 0.3 19.8 0 0\n",
+          "line 1: material a: drucker_prager parameter K: '1e400' is not a finite number");
+  rejects("a soil 2650 abc 0.3 19.8 0 0\n",
+          "line 1: material a: unknown model 'abc' (allowed: drucker_prager, mohr_coulomb)");
+  rejects("a soil\n", "line 1: material a: 'soil' needs rho0 and a model with its parameters");
+  rejects("a rock 1 2 3\n", "line 1: material a: unknown kind 'rock' (allowed: soil, wall)");
+  rejects("w wall\nw wall\n", "line 2: material w is defined twice");
+  rejects("# nothing\n", "no material defined");
 }

@@ -9,6 +9,7 @@
 #include "compute.h"
 #include "modify.h"
 #include "pair_sph_soil.h"
+#include "soil_drucker_prager.h"
 #include "update.h"
 
 #include <cmath>
@@ -301,7 +302,10 @@ TEST_F(SoilPhysics, GeostaticColumnStaysAtRest)
     command("sph_soil/set left wall 0 0 0 1 0 0");
     command("sph_soil/set right wall 0.1 0 0 -1 0 0");
     command("pair_style sph/soil");
-    command("pair_coeff 1 1 soil 1850 1.5e6 0.3 45 0 0");
+    // Bui 2008's fit: the 2% below was measured with it. With the stronger exact fit (8% at
+    // phi = 45) the fitted base stress is 3.5% above rho g H at 0.1 s and 4% at 0.4 s: the
+    // no-slip side walls then carry a downward shear (doc/validation.rst, open questions)
+    command("pair_coeff 1 1 soil 1850 drucker_prager 1.5e6 0.3 45 0 0 fit associated");
     command("pair_coeff 2 2 wall");
     command("fix gravity soil gravity 9.81 vector 0 -1 0");
     command("fix integrate soil sph/soil");
@@ -350,28 +354,37 @@ TEST_F(SoilPhysics, UnstableRunStopsNamingParticleAndStep)
                       command("run 10 post no"));
 }
 
-// pair_style ... fit nonassociated reaches the model the integrator uses; a repeated
-// pair_style without it goes back to the default
-TEST_F(SoilPhysics, FitKeywordPicksTheDruckerPragerFit)
+// the material's model and its parameters reach the integrator: a line without a model word is
+// Drucker-Prager with the fit exact for psi = 0, 'fit associated' picks Bui 2008's, the word
+// mohr_coulomb the Mohr-Coulomb model; a Mohr-Coulomb run conserves momentum like any other
+TEST_F(SoilPhysics, MaterialModelReachesTheIntegrator)
 {
-  HIDE_OUTPUT([&] { command("variable vx atom 0.0"); });
+  HIDE_OUTPUT([&] { command("variable vx atom 0.02*sin(2*PI*y/0.16)"); });
   periodic_patch();
   soil_run_setup();
-  auto alpha_phi = [&]() {
+  auto model = [&]() {
     HIDE_OUTPUT([&] { command("run 0 post no"); });
     auto pair = dynamic_cast<LAMMPS_NS::PairSPHSoil *>(lmp->force->pair);
     EXPECT_NE(pair, nullptr);
-    auto model = dynamic_cast<const SPHSoil::DruckerPrager *>(pair->model(1));
-    EXPECT_NE(model, nullptr);
-    return model ? model->alpha_phi() : 0.0;
+    return pair ? pair->model(1) : nullptr;
+  };
+  auto alpha_phi = [&]() {
+    auto drucker_prager = dynamic_cast<const SPHSoil::DruckerPrager *>(model());
+    EXPECT_NE(drucker_prager, nullptr);
+    return drucker_prager ? drucker_prager->alpha_phi() : 0.0;
   };
   const double phi = 19.8 * M_PI / 180.0;
-  const double associated = std::tan(phi) / std::sqrt(9.0 + 12.0 * std::tan(phi) * std::tan(phi));
-  EXPECT_NEAR(alpha_phi(), associated, 1e-15);
-  HIDE_OUTPUT([&] { command("pair_style sph/soil fit nonassociated"); });
-  EXPECT_NEAR(alpha_phi(), std::sin(phi) / 3.0, 1e-15);
-  HIDE_OUTPUT([&] { command("pair_style sph/soil alpha 0.1"); });
-  EXPECT_NEAR(alpha_phi(), associated, 1e-15);
+  EXPECT_EQ(alpha_phi(), std::sin(phi) / 3.0);
+  HIDE_OUTPUT([&] { command("pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 fit associated"); });
+  EXPECT_NEAR(alpha_phi(), std::tan(phi) / std::sqrt(9.0 + 12.0 * std::tan(phi) * std::tan(phi)), 1e-15);
+  HIDE_OUTPUT([&] { command("pair_coeff 1 1 soil 2650 mohr_coulomb 0.7e6 0.3 19.8 0 0"); });
+  EXPECT_STREQ(model()->keyword(), "mohr_coulomb");
+  auto before = totals();
+  HIDE_OUTPUT([&] { command("run 500 post no"); });
+  auto after = totals();
+  EXPECT_EQ(after[0], before[0]);
+  const double scale = before[0] * 0.02;
+  for (int k = 1; k <= 3; k++) EXPECT_NEAR(after[k], before[k], 1e-12 * scale) << "component " << k;
 }
 
 TEST_F(SoilPhysics, ComputeGivesInvariantsAndStrainMeasure)

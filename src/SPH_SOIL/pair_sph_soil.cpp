@@ -14,6 +14,7 @@
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "soil_kernels.h"
+#include "soil_models.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
@@ -30,7 +31,7 @@ using SPHSoil::SoilMaterial;
 
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1), free_slip(false),
-    drucker_prager_fit(SPHSoil::DruckerPragerFit::associated), kernel(SPHSoil::KernelKind::cubic),
+    kernel(SPHSoil::KernelKind::cubic),
     sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), warned_density(false),
     warned_spacing(false), warned_coinciding(false), nmax_packed(0),
     packed(nullptr), sums(nullptr)
@@ -71,7 +72,7 @@ void PairSPHSoil::allocate()
 }
 
 /* ----------------------------------------------------------------------
-   pair_style sph/soil [alpha A] [beta B] [wall noslip|freeslip]
+   pair_style sph/soil [alpha A] [beta B] [wall noslip|freeslip] [kernel cubic|wendland2]
 ------------------------------------------------------------------------- */
 
 void PairSPHSoil::settings(int narg, char **arg)
@@ -79,7 +80,6 @@ void PairSPHSoil::settings(int narg, char **arg)
   // a repeated pair_style command starts again from the defaults
   viscosity_alpha = viscosity_beta = 0.1;
   free_slip = false;
-  drucker_prager_fit = SPHSoil::DruckerPragerFit::associated;
   kernel = SPHSoil::KernelKind::cubic;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
@@ -97,19 +97,17 @@ void PairSPHSoil::settings(int narg, char **arg)
         error->all(FLERR, "Illegal pair_style sph/soil wall {}: must be noslip or freeslip",
                    arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "fit") == 0) {
-      if (strcmp(arg[iarg + 1], "associated") == 0)
-        drucker_prager_fit = SPHSoil::DruckerPragerFit::associated;
-      else if (strcmp(arg[iarg + 1], "nonassociated") == 0)
-        drucker_prager_fit = SPHSoil::DruckerPragerFit::nonassociated;
-      else
-        error->all(FLERR, "Illegal pair_style sph/soil fit {}: must be associated or nonassociated",
-                   arg[iarg + 1]);
+      // moved in 2026-12: say where to, rather than "unknown keyword"
+      error->all(FLERR, "Illegal pair_style sph/soil keyword fit: the Drucker-Prager fit is now a "
+                        "parameter of the material ('soil rho0 drucker_prager K nu phi psi c fit {}' "
+                        "in pair_coeff or a material file); by default it is the fit exact for the "
+                        "dilatancy angle", arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "kernel") == 0) {
       if (!SPHSoil::kernel_kind(arg[iarg + 1], kernel))
         error->all(FLERR, "Illegal pair_style sph/soil kernel {}: must be one of {}", arg[iarg + 1],
                    SPHSoil::KERNEL_NAMES);
     } else {
-      error->all(FLERR, "Illegal pair_style sph/soil keyword {} (allowed: alpha, beta, wall, fit, "
+      error->all(FLERR, "Illegal pair_style sph/soil keyword {} (allowed: alpha, beta, wall, "
                         "kernel)", arg[iarg]);
     }
   }
@@ -117,7 +115,7 @@ void PairSPHSoil::settings(int narg, char **arg)
 
 /* ----------------------------------------------------------------------
    pair_coeff * * file.soil name1 ... nameN     (NULL: type not handled)
-   pair_coeff I I soil rho0 K nu phi psi c
+   pair_coeff I I soil rho0 [model] parameters...
    pair_coeff I I wall
 ------------------------------------------------------------------------- */
 
@@ -126,8 +124,9 @@ void PairSPHSoil::coeff(int narg, char **arg)
   if (!allocated) allocate();
   const int ntypes = atom->ntypes;
   if (narg < 3)
-    error->all(FLERR, "Incorrect args for pair_coeff sph/soil: expected 'I I soil rho0 K nu phi "
-                      "psi c', 'I I wall' or '* * file name1 ... name{}'", ntypes);
+    error->all(FLERR, "Incorrect args for pair_coeff sph/soil: expected 'I I soil rho0 model "
+                      "parameters' (models: {}), 'I I wall' or '* * file name1 ... name{}'",
+               SPHSoil::model_keywords(), ntypes);
 
   if (strcmp(arg[2], "soil") == 0 || strcmp(arg[2], "wall") == 0) {
     int ilo, ihi, jlo, jhi;
@@ -249,15 +248,8 @@ void PairSPHSoil::init_style()
 
   // every type has a material here (init_one stops otherwise): a plain flag for the pair loop
   type_is_wall.assign(atom->ntypes + 1, 0);
-  for (int t = 1; t <= atom->ntypes; t++) type_is_wall[t] = materials[t].wall ? 1 : 0;
+  for (int t = 1; t <= atom->ntypes; t++) type_is_wall[t] = materials[t].is_wall() ? 1 : 0;
   check_particles();
-
-  // one constitutive model per soil type, built from its material (the factory decides which)
-  models.clear();
-  models.resize(atom->ntypes + 1);
-  for (int t = 1; t <= atom->ntypes; t++)
-    if (type_set[t] && !materials[t].wall)
-      models[t] = SPHSoil::make_constitutive_model(materials[t], drucker_prager_fit);
 
   // a half list: each pair once, shares to both particles (see eval())
   SphSoilCompat::request_half_neighbor_list(neighbor, this, instance_me);
@@ -406,13 +398,13 @@ double PairSPHSoil::init_one(int i, int j)
     error->all(FLERR, "All pair coeffs are not set: pair sph/soil needs a material for atom "
                       "types {} and {}", i, j);
   const SoilMaterial &mi = materials[i], &mj = materials[j];
-  if (mi.wall && mj.wall) {
+  if (mi.is_wall() && mj.is_wall()) {
     // wall particles never interact with each other: only within the skin
     sound_speed_ij[i][j] = sound_speed_ij[j][i] = 0.0;
     return 0.0;
   }
-  const double ci = mi.wall ? mj.wave_speed() : mi.wave_speed();
-  const double cj = mj.wall ? mi.wave_speed() : mj.wave_speed();
+  const double ci = mi.is_wall() ? mj.wave_speed() : mi.wave_speed();
+  const double cj = mj.is_wall() ? mi.wave_speed() : mj.wave_speed();
   sound_speed_ij[i][j] = sound_speed_ij[j][i] = 0.5 * (ci + cj);
   return SPHSoil::kernel_support(kernel) * max_h;
 }

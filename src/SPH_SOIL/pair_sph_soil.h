@@ -23,7 +23,6 @@ PairStyle(sph/soil,PairSPHSoil);
 #include "soil_kernels.h"
 #include "soil_material.h"
 
-#include <memory>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -42,23 +41,21 @@ class PairSPHSoil : public Pair {
 
   // for fix sph/soil and the computes
   const SPHSoil::SoilMaterial &material(int type) const { return materials[type]; }
-  bool is_wall_type(int type) const { return materials[type].wall; }
+  bool is_wall_type(int type) const { return type_set[type] && materials[type].is_wall(); }
   // constitutive model of a soil type, nullptr for wall types and types without material
-  const SPHSoil::ConstitutiveModel *model(int type) const { return models[type].get(); }
+  const SPHSoil::ConstitutiveModel *model(int type) const { return materials[type].model.get(); }
   double max_wave_speed() const;
   SPHSoil::KernelKind kernel_kind() const { return kernel; }
 
  protected:
   double viscosity_alpha, viscosity_beta;    // Monaghan artificial viscosity
   bool free_slip;                            // walls: reverse only the normal velocity
-  SPHSoil::DruckerPragerFit drucker_prager_fit;    // plane-strain fit to Mohr-Coulomb
   SPHSoil::KernelKind kernel;                      // the pair loop is compiled once per kernel
   std::vector<SPHSoil::SoilMaterial> materials;    // per atom type, index 1..ntypes
   std::vector<int> type_set;                       // 1 once pair_coeff gave the type a material
   std::vector<int> type_is_wall;                   // per type, for the pair loop
   double **sound_speed_ij;                         // mean P-wave speed of a type pair
   double max_h;                                    // largest smoothing length at init
-  std::vector<std::unique_ptr<SPHSoil::ConstitutiveModel>> models;    // per atom type
   class AtomVecSPHSoil *avec;
   bool warned_density, warned_spacing, warned_coinciding;    // set-up warnings, given once
   void check_particles();

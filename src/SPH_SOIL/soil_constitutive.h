@@ -10,22 +10,21 @@
    - the spin is double[3] = omega_xy, omega_xz, omega_yz with
      omega^ab = (g^ab - g^ba)/2, g^ab = dv^a/dx^b (so omega_yx = -omega_xy).
 
-   The integrator only talks to the abstract ConstitutiveModel, so other
-   models (Mohr-Coulomb, cohesive Drucker-Prager with artificial stress,
-   ...) can be added here and chosen in make_constitutive_model() without
-   touching the pair style or the fix.
+   The integrator only talks to the abstract ConstitutiveModel. Models are
+   chosen by keyword from the registry in soil_models.cpp: a new model is
+   one file with its class (it parses and checks its own parameters and
+   derives its constants once) and one line there. The models here:
+   soil_drucker_prager.h, soil_mohr_coulomb.h.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SOIL_CONSTITUTIVE_H
 #define LMP_SOIL_CONSTITUTIVE_H
 
 #include <cmath>
-#include <memory>
 #include <string>
+#include <vector>
 
 namespace SPHSoil {
-
-struct SoilMaterial;
 
 /* ----------------------------------------------------------------------
    invariants and measures of a Voigt tensor (inline: used in output loops)
@@ -71,6 +70,43 @@ inline double strain_measure(const double strain[6])
 }
 
 /* ----------------------------------------------------------------------
+   Jaumann terms of the stress rate, sigma^ag omega^bg + sigma^gb omega^ag, i.e. the
+   matrix W sigma - sigma W with W^ab = omega^ab. Since W is antisymmetric and sigma
+   symmetric, (sigma W)^ab = -(W sigma)^ba, so the term is M^ab + M^ba with M = W sigma.
+   Under a rigid rotation x -> R x with dR/dt = W R this is exactly d(R sigma R^T)/dt.
+   Written into `rate` (not added).
+------------------------------------------------------------------------- */
+
+inline void jaumann_terms(const double stress[6], const double spin[3], double rate[6])
+{
+  // M = W sigma written out (W has zeros on the diagonal: no multiplications by them)
+  const double sxx = stress[0], syy = stress[1], szz = stress[2];
+  const double sxy = stress[3], sxz = stress[4], syz = stress[5];
+  const double wxy = spin[0], wxz = spin[1], wyz = spin[2];
+  const double m00 = wxy * sxy + wxz * sxz;
+  const double m11 = -wxy * sxy + wyz * syz;
+  const double m22 = -wxz * sxz - wyz * syz;
+  const double m01 = wxy * syy + wxz * syz, m10 = -wxy * sxx + wyz * sxz;
+  const double m02 = wxy * syz + wxz * szz, m20 = -wxz * sxx - wyz * sxy;
+  const double m12 = -wxy * sxz + wyz * szz, m21 = -wxz * sxy - wyz * syy;
+  rate[0] = 2.0 * m00;
+  rate[1] = 2.0 * m11;
+  rate[2] = 2.0 * m22;
+  rate[3] = m01 + m10;
+  rate[4] = m02 + m20;
+  rate[5] = m12 + m21;
+}
+
+// Hooke's law in rate form, added to `rate`: 2G (epsdot - epsdot^gg/3 delta) + K epsdot^gg delta
+inline void add_elastic_rate(double bulk, double shear, const double strain_rate[6], double rate[6])
+{
+  const double volumetric_rate = strain_rate[0] + strain_rate[1] + strain_rate[2];
+  const double normal_shift = (bulk - 2.0 * shear / 3.0) * volumetric_rate;
+  for (int k = 0; k < 3; k++) rate[k] += 2.0 * shear * strain_rate[k] + normal_shift;
+  for (int k = 3; k < 6; k++) rate[k] += 2.0 * shear * strain_rate[k];
+}
+
+/* ----------------------------------------------------------------------
    interface seen by the integrator
 ------------------------------------------------------------------------- */
 
@@ -78,8 +114,12 @@ class ConstitutiveModel {
  public:
   virtual ~ConstitutiveModel() = default;
 
-  // d(stress)/dt from the current stress, strain rate and spin:
-  // Jaumann terms + elastic-plastic part
+  // the keyword that chose it (drucker_prager, mohr_coulomb)
+  virtual const char *keyword() const = 0;
+
+  // d(stress)/dt from the current stress, strain rate and spin: Jaumann terms + the
+  // model's rate (elastic-plastic for a rate-form model, elastic for one whose plastic
+  // correction is all in return_to_admissible())
   virtual void stress_rate(const double stress[6], const double strain_rate[6],
                            const double spin[3], double rate[6]) const = 0;
 
@@ -94,88 +134,63 @@ class ConstitutiveModel {
   // tolerance: the "yielded" flag of the output
   virtual bool on_yield_surface(const double stress[6]) const = 0;
 
+  // P-wave modulus K + 4G/3 (Pa)
+  virtual double p_wave_modulus() const = 0;
+
   // elastic P-wave speed sqrt((K + 4G/3)/rho0), for the time step and artificial viscosity
-  virtual double wave_speed(double reference_density) const = 0;
+  double wave_speed(double reference_density) const
+  {
+    return std::sqrt(p_wave_modulus() / reference_density);
+  }
 };
 
 /* ----------------------------------------------------------------------
-   Drucker-Prager, non-associated, perfectly plastic, plane-strain fit to
-   Mohr-Coulomb (Bui et al. 2008; doc/theory.rst section 3):
-     f = sqrt(J2) + alpha_phi I1 - k_c,   g = sqrt(J2) + 3 I1 sin(psi)
-   with one of two plane-strain fits (DruckerPragerFit):
-     associated (Bui 2008; exact for associated flow, psi = phi):
-       alpha_phi = tan(phi)/sqrt(9 + 12 tan^2 phi),  k_c = 3c/sqrt(9 + 12 tan^2 phi)
-     nonassociated (exact for psi = 0: no plastic volume change, so s_zz = 0
-     on the surface and sqrt(J2) is the in-plane maximum shear stress):
-       alpha_phi = sin(phi)/3,  k_c = c cos(phi)
-   phi = 0 gives a pressure-independent (von Mises-like) surface sqrt(J2) <= c
-   with no tension cap (both fits agree there).
+   the parameters of a frictional soil, shared by the models that have them:
+   linear elasticity (K, nu) and a Mohr-Coulomb strength (phi, c) with a
+   dilatancy angle psi for the flow rule
 ------------------------------------------------------------------------- */
 
-enum class DruckerPragerFit { associated, nonassociated };
-
-struct DruckerPragerParameters {
+struct FrictionalParameters {
   double bulk_modulus = 0.0;       // K (Pa)
   double poisson_ratio = 0.0;      // nu
   double friction_angle = 0.0;     // phi (degrees)
   double dilatancy_angle = 0.0;    // psi (degrees)
   double cohesion = 0.0;           // c (Pa)
-  DruckerPragerFit fit = DruckerPragerFit::associated;    // plane-strain fit to Mohr-Coulomb
+
+  // G = 3K (1 - 2nu) / (2 (1 + nu))
+  double shear_modulus() const
+  {
+    return 3.0 * bulk_modulus * (1.0 - 2.0 * poisson_ratio) / (2.0 * (1.0 + poisson_ratio));
+  }
+  // empty if admissible, else which parameter is wrong, its value and its allowed range
+  std::string check() const;
 
   // the same from Young's modulus: K = E / (3 (1 - 2 nu))
-  static DruckerPragerParameters from_young_modulus(double young_modulus, double poisson_ratio,
-                                                    double friction_angle, double dilatancy_angle,
-                                                    double cohesion);
-};
-
-class DruckerPrager final : public ConstitutiveModel {
- public:
-  // relative distance to the yield surface below which a stress counts as on it,
-  // in units of sqrt(J2) + alpha_phi |I1| + k_c (see soil_constitutive.cpp)
-  static constexpr double YIELD_TOLERANCE = 1.0e-10;
-  // J2 below (1 - SQUARED_MARGIN) r^2 means sqrt(J2) < r whatever the rounding of the square
-  // root (0.5 ulp): the tests that decide "inside" skip the square root with no change of result
-  static constexpr double SQUARED_MARGIN = 1.0e-12;
-
-  // the parameters must pass check(); throws std::invalid_argument otherwise
-  explicit DruckerPrager(const DruckerPragerParameters &parameters);
-
-  // empty if the parameters are admissible, else which one is wrong and its allowed range
-  static std::string check(const DruckerPragerParameters &parameters);
-  // the same for parameters given as (E, nu, phi, psi, c): names E rather than K
+  static FrictionalParameters from_young_modulus(double young_modulus, double poisson_ratio,
+                                                 double friction_angle, double dilatancy_angle,
+                                                 double cohesion);
+  // check() for parameters given as (E, nu, phi, psi, c): names E rather than K
   static std::string check_young_modulus(double young_modulus, double poisson_ratio,
                                          double friction_angle, double dilatancy_angle,
                                          double cohesion);
 
-  void stress_rate(const double stress[6], const double strain_rate[6], const double spin[3],
-                   double rate[6]) const override;
-  bool return_to_admissible(double stress[6]) const override;
-  double yield_function(const double stress[6]) const override;
-  bool on_yield_surface(const double stress[6]) const override;
-  double wave_speed(double reference_density) const override;
-
-  const DruckerPragerParameters &parameters() const { return params; }
-  double bulk_modulus() const { return bulk; }
-  double shear_modulus() const { return shear; }
-  double alpha_phi() const { return alpha; }
-  double k_c() const { return kc; }
-
- private:
-  DruckerPragerParameters params;
-  double bulk, shear;          // K, G
-  double alpha, kc;            // alpha_phi, k_c
-  double sin_psi;              // sin(dilatancy angle)
-  double flow_volumetric;      // 9 K sin(psi): volumetric part of the plastic stress rate
-  double plastic_denominator;  // 27 alpha_phi K sin(psi) + G, > 0
-  double p_modulus;            // K + 4G/3
+  // the order of the words of a material line, for messages
+  static constexpr const char *WORDS = "K nu phi psi c";
+  static constexpr int COUNT = 5;
+  // K nu phi psi c from the first COUNT words (the model's keyword names it in errors); the
+  // words after them go to `options`. False with the reason in `error` if a word is missing,
+  // not a finite number, or the set fails check().
+  static bool from_words(const std::string &model, const std::vector<std::string> &words,
+                         FrictionalParameters &parameters, std::vector<std::string> &options,
+                         std::string &error);
 };
 
-// The model of a soil material (nullptr for a wall). Today always Drucker-Prager, with the
-// given fit to Mohr-Coulomb; this is where a material keyword would pick another model.
-// Throws std::invalid_argument if the material's parameters are not admissible.
-std::unique_ptr<ConstitutiveModel>
-make_constitutive_model(const SoilMaterial &material,
-                        DruckerPragerFit fit = DruckerPragerFit::associated);
+// the decimal form of a number for messages: 19.8, not 19.800000
+std::string format_number(double value);
+// a whole word as a finite number (the words of material lines); false if it is not one
+bool parse_finite_number(const std::string &word, double &value);
+
+constexpr double DEG2RAD = 3.14159265358979323846 / 180.0;
 
 }    // namespace SPHSoil
 

@@ -4,60 +4,21 @@
 
 #include "soil_material.h"
 
-#include "soil_constitutive.h"
+#include "soil_models.h"
 
-#include <cmath>
-#include <cstdlib>
+#include <cctype>
 #include <sstream>
 
 using namespace SPHSoil;
-
-namespace {
-
-bool to_number(const std::string &word, double &value)
-{
-  char *end = nullptr;
-  value = std::strtod(word.c_str(), &end);
-  return end && *end == '\0' && !word.empty() && std::isfinite(value);
-}
-
-std::string format(double value)
-{
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-}    // namespace
-
-std::string SoilMaterial::check() const
-{
-  if (wall) return "";
-  if (!(density > 0.0) || !std::isfinite(density))
-    return "density rho0 = " + format(density) + " must be finite and > 0";
-  // the elastic-plastic parameters are the constitutive model's to judge
-  DruckerPragerParameters parameters;
-  parameters.bulk_modulus = bulk_modulus;
-  parameters.poisson_ratio = poisson_ratio;
-  parameters.friction_angle = friction_angle;
-  parameters.dilatancy_angle = dilatancy_angle;
-  parameters.cohesion = cohesion;
-  return DruckerPrager::check(parameters);
-}
-
-double SoilMaterial::wave_speed() const
-{
-  if (wall || density <= 0.0) return 0.0;
-  return std::sqrt((bulk_modulus + 4.0 * shear_modulus() / 3.0) / density);
-}
 
 bool SPHSoil::material_from_words(const std::string &name, const std::vector<std::string> &words,
                                   SoilMaterial &material, std::string &error)
 {
   material = SoilMaterial();
   material.name = name;
+  const std::string usage = "'soil rho0 model parameters' (models: " + model_keywords() + ") or 'wall'";
   if (words.empty()) {
-    error = "material " + name + ": expected 'soil rho0 K nu phi psi c' or 'wall'";
+    error = "material " + name + ": expected " + usage;
     return false;
   }
   if (words[0] == "wall") {
@@ -65,35 +26,30 @@ bool SPHSoil::material_from_words(const std::string &name, const std::vector<std
       error = "material " + name + ": 'wall' takes no parameters, got " + std::to_string(words.size() - 1);
       return false;
     }
-    material.wall = true;
     return true;
   }
   if (words[0] != "soil") {
     error = "material " + name + ": unknown kind '" + words[0] + "' (allowed: soil, wall)";
     return false;
   }
-  if (words.size() != 7) {
-    error = "material " + name + ": 'soil' needs 6 parameters (rho0 K nu phi psi c), got " +
-        std::to_string(words.size() - 1);
+  if (words.size() < 2) {
+    error = "material " + name + ": 'soil' needs rho0 and a model with its parameters";
     return false;
   }
-  double values[6];
-  for (int k = 0; k < 6; k++)
-    if (!to_number(words[k + 1], values[k])) {
-      error = "material " + name + ": '" + words[k + 1] + "' is not a finite number";
-      return false;
-    }
-  material.density = values[0];
-  material.bulk_modulus = values[1];
-  material.poisson_ratio = values[2];
-  material.friction_angle = values[3];
-  material.dilatancy_angle = values[4];
-  material.cohesion = values[5];
-  const std::string problem = material.check();
-  if (!problem.empty()) {
-    error = "material " + name + ": " + problem;
+  if (!parse_finite_number(words[1], material.density) || !(material.density > 0.0)) {
+    error = "material " + name + ": density rho0 = " + words[1] + " must be finite and > 0";
     return false;
   }
+  // a number where the model word goes: a line from before models had keywords
+  const bool named = words.size() > 2 && std::isalpha((unsigned char) words[2][0]);
+  const std::string keyword = named ? words[2] : DEFAULT_MODEL;
+  const std::vector<std::string> parameters(words.begin() + (named ? 3 : 2), words.end());
+  std::unique_ptr<ConstitutiveModel> model = make_model(keyword, parameters, error);
+  if (!model) {
+    error = "material " + name + ": " + error;
+    return false;
+  }
+  material.model = std::move(model);
   return true;
 }
 

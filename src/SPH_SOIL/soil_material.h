@@ -1,18 +1,22 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPH_SOIL package: materials of pair_style sph/soil (pure, no LAMMPS).
 
-   A material is either soil (density, elastic and Drucker-Prager
-   parameters) or wall (boundary particles, which borrow the state of the
-   soil particle they interact with). Material files list one material per
-   line (see potentials/README.md):
+   A material is either soil (a reference density and a constitutive model
+   with its parameters) or wall (boundary particles, which borrow the state
+   of the soil particle they interact with). Material files list one
+   material per line (see potentials/README.md):
 
-     name  soil  density  bulk_modulus  poisson_ratio  friction_deg  dilatancy_deg  cohesion
+     name  soil  rho0  model  parameters...     (model: see soil_models.h)
+     name  soil  rho0  K nu phi psi c           (no model word: drucker_prager)
      name  wall
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SOIL_MATERIAL_H
 #define LMP_SOIL_MATERIAL_H
 
+#include "soil_constitutive.h"
+
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,22 +24,16 @@ namespace SPHSoil {
 
 struct SoilMaterial {
   std::string name;
-  bool wall = false;
-  double density = 0.0;             // reference density rho_0 (kg/m^3)
-  double bulk_modulus = 0.0;        // K (Pa)
-  double poisson_ratio = 0.0;       // nu
-  double friction_angle = 0.0;      // phi (degrees)
-  double dilatancy_angle = 0.0;     // psi (degrees)
-  double cohesion = 0.0;            // c (Pa)
+  double density = 0.0;                               // reference density rho_0 (kg/m^3)
+  std::shared_ptr<const ConstitutiveModel> model;     // nullptr for a wall
 
-  // empty if the parameters are admissible, else what is wrong and the allowed range
-  std::string check() const;
-  double shear_modulus() const { return 3.0 * bulk_modulus * (1.0 - 2.0 * poisson_ratio) / (2.0 * (1.0 + poisson_ratio)); }
-  // elastic P-wave speed sqrt((K + 4G/3)/rho_0): bounds the time step, scales the viscosity
-  double wave_speed() const;
+  bool is_wall() const { return !model; }
+  // elastic P-wave speed sqrt((K + 4G/3)/rho_0) of a soil: bounds the time step, scales the
+  // viscosity; 0 for a wall
+  double wave_speed() const { return model ? model->wave_speed(density) : 0.0; }
 };
 
-// Build a material from words: {"soil", rho0, K, nu, phi, psi, c} or {"wall"}.
+// Build a material from words: {"soil", rho0, [model,] parameters...} or {"wall"}.
 // On failure returns false and says why in `error`.
 bool material_from_words(const std::string &name, const std::vector<std::string> &words,
                          SoilMaterial &material, std::string &error);
