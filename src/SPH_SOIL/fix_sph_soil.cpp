@@ -33,7 +33,7 @@ constexpr double BIG = 1.0e30;
 
 FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), cfl(0.0), stable_cfl(0.2), max_dt(0.0), avec(nullptr), pair(nullptr),
-    yielded_count(0), step_rates(nullptr), saved_rates(nullptr), allocated_rows(0), restore_pending(false)
+    yielded_count(0), integrator_state(nullptr), allocated_rows(0), restore_pending(false)
 {
   time_integrate = 1;
   restart_global = 1;
@@ -79,8 +79,7 @@ FixSPHSoil::~FixSPHSoil()
 {
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(saved_rates);
-  memory->destroy(step_rates);
+  memory->destroy(integrator_state);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -186,9 +185,9 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
 
   if (restore_pending) {
     for (int i = 0; i < nlocal; i++)
-      if (saved_rates[i][0] != 0.0) {
-        if (integrated(i)) restore_rates(i, saved_rates[i]);
-        saved_rates[i][0] = 0.0;
+      if (integrator_state[i][SAVED] != 0.0) {
+        if (integrated(i)) restore_rates(i);
+        integrator_state[i][SAVED] = 0.0;
       }
     restore_pending = false;
   }
@@ -206,11 +205,11 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
     // Heun predictor for density, strain and stress: a full step with the old rates,
     // so that the force evaluation sees the state at t + dt (a half step would make the
     // scheme first order); the old rates are kept for the corrector
-    double *old = step_rates[i];
-    old[0] = drho[i];
+    double *old = integrator_state[i];
+    old[HEUN_DRHO] = drho[i];
     rho[i] += dtv * drho[i];
     for (int k = 0; k < 6; k++) {
-      old[1 + k] = avec->strain_rate[i][k];
+      old[HEUN_STRAIN_RATE + k] = avec->strain_rate[i][k];
       avec->total_strain[i][k] += dtv * avec->strain_rate[i][k];
       avec->stress[i][k] += dtv * avec->stress_rate[i][k];
     }
@@ -239,10 +238,10 @@ void FixSPHSoil::final_integrate()
     if (!integrated(i)) continue;
     const double dtfm = dtf / rmass[i];
     for (int a = 0; a < 3; a++) v[i][a] += dtfm * f[i][a];
-    const double *old = step_rates[i];
-    rho[i] += dtf * (drho[i] - old[0]);
+    const double *old = integrator_state[i];
+    rho[i] += dtf * (drho[i] - old[HEUN_DRHO]);
     for (int k = 0; k < 6; k++)
-      avec->total_strain[i][k] += dtf * (avec->strain_rate[i][k] - old[1 + k]);
+      avec->total_strain[i][k] += dtf * (avec->strain_rate[i][k] - old[HEUN_STRAIN_RATE + k]);
 
     const auto model = model_of_type[atom->type[i]];
     double *stress = avec->stress[i];
@@ -348,33 +347,36 @@ void FixSPHSoil::post_run()
 {
   const int nlocal = atom->nlocal;
   for (int i = 0; i < nlocal; i++) {
-    if (integrated(i)) save_rates(i, saved_rates[i]);
-    else saved_rates[i][0] = 0.0;
+    if (integrated(i)) save_rates(i, integrator_state[i] + SAVED);
+    else integrator_state[i][SAVED] = 0.0;
   }
   restore_pending = true;
 }
 
 /* ---------------------------------------------------------------------- */
 
-void FixSPHSoil::save_rates(int i, double *row) const
+// into a saved block (the row's, or a restart buffer's): block[0] = flag, then the rates at
+// the offsets they have in the row
+void FixSPHSoil::save_rates(int i, double *block) const
 {
-  row[0] = 1.0;
+  block[0] = 1.0;
   const double inv_mass = 1.0 / atom->rmass[i];
-  for (int a = 0; a < 3; a++) row[1 + a] = atom->f[i][a] * inv_mass;
-  row[4] = atom->drho[i];
+  for (int a = 0; a < 3; a++) block[SAVED_ACCELERATION - SAVED + a] = atom->f[i][a] * inv_mass;
+  block[SAVED_DRHO - SAVED] = atom->drho[i];
   for (int k = 0; k < 6; k++) {
-    row[5 + k] = avec->strain_rate[i][k];
-    row[11 + k] = avec->stress_rate[i][k];
+    block[SAVED_STRAIN_RATE - SAVED + k] = avec->strain_rate[i][k];
+    block[SAVED_STRESS_RATE - SAVED + k] = avec->stress_rate[i][k];
   }
 }
 
-void FixSPHSoil::restore_rates(int i, const double *row)
+void FixSPHSoil::restore_rates(int i)
 {
-  for (int a = 0; a < 3; a++) atom->f[i][a] = row[1 + a] * atom->rmass[i];
-  atom->drho[i] = row[4];
+  const double *row = integrator_state[i];
+  for (int a = 0; a < 3; a++) atom->f[i][a] = row[SAVED_ACCELERATION + a] * atom->rmass[i];
+  atom->drho[i] = row[SAVED_DRHO];
   for (int k = 0; k < 6; k++) {
-    avec->strain_rate[i][k] = row[5 + k];
-    avec->stress_rate[i][k] = row[11 + k];
+    avec->strain_rate[i][k] = row[SAVED_STRAIN_RATE + k];
+    avec->stress_rate[i][k] = row[SAVED_STRESS_RATE + k];
   }
 }
 
@@ -382,37 +384,31 @@ void FixSPHSoil::restore_rates(int i, const double *row)
 
 void FixSPHSoil::grow_arrays(int nmax)
 {
-  memory->grow(step_rates, nmax, NSTEP, "sph/soil:step_rates");
-  memory->grow(saved_rates, nmax, NRATES + 1, "sph/soil:saved_rates");
+  memory->grow(integrator_state, nmax, NSTATE, "sph/soil:integrator_state");
   // new rows hold nothing to restore (atoms made later by create_atoms etc.)
-  for (int i = allocated_rows; i < nmax; i++) saved_rates[i][0] = 0.0;
+  for (int i = allocated_rows; i < nmax; i++) integrator_state[i][SAVED] = 0.0;
   allocated_rows = nmax;
 }
 
 void FixSPHSoil::copy_arrays(int i, int j, int /*delflag*/)
 {
-  for (int k = 0; k < NSTEP; k++) step_rates[j][k] = step_rates[i][k];
-  for (int k = 0; k <= NRATES; k++) saved_rates[j][k] = saved_rates[i][k];
+  for (int k = 0; k < NSTATE; k++) integrator_state[j][k] = integrator_state[i][k];
 }
 
-// atoms migrate between the predictor and the corrector: the old rates go with them
+// the saved block only when it holds something
 int FixSPHSoil::pack_exchange(int i, double *buf)
 {
-  for (int k = 0; k < NSTEP; k++) buf[k] = step_rates[i][k];
-  buf[NSTEP] = saved_rates[i][0];
-  if (buf[NSTEP] == 0.0) return NSTEP + 1;
-  for (int k = 1; k <= NRATES; k++) buf[NSTEP + k] = saved_rates[i][k];
-  return NSTEP + NRATES + 1;
+  const int n = integrator_state[i][SAVED] != 0.0 ? NSTATE : SAVED + 1;
+  for (int k = 0; k < n; k++) buf[k] = integrator_state[i][k];
+  return n;
 }
 
 int FixSPHSoil::unpack_exchange(int nlocal, double *buf)
 {
-  for (int k = 0; k < NSTEP; k++) step_rates[nlocal][k] = buf[k];
-  saved_rates[nlocal][0] = buf[NSTEP];
-  if (buf[NSTEP] == 0.0) return NSTEP + 1;
-  for (int k = 1; k <= NRATES; k++) saved_rates[nlocal][k] = buf[NSTEP + k];
-  restore_pending = true;
-  return NSTEP + NRATES + 1;
+  const int n = buf[SAVED] != 0.0 ? NSTATE : SAVED + 1;
+  for (int k = 0; k < n; k++) integrator_state[nlocal][k] = buf[k];
+  if (n == NSTATE) restore_pending = true;
+  return n;
 }
 
 /* ----------------------------------------------------------------------
@@ -447,11 +443,12 @@ void FixSPHSoil::restart(char *buf)
 
 int FixSPHSoil::pack_restart(int i, double *buf)
 {
-  // buf[0] is the count of values including itself, the way other fixes read it
-  buf[0] = NRATES + 2;
+  // buf[0] is the count of values including itself, the way other fixes read it; then the
+  // saved block (flag and rates), the current rates
+  buf[0] = NSAVED + 2;
   save_rates(i, &buf[1]);
   if (!integrated(i)) buf[1] = 0.0;
-  return NRATES + 2;
+  return NSAVED + 2;
 }
 
 void FixSPHSoil::unpack_restart(int nlocal, int nth)
@@ -460,23 +457,23 @@ void FixSPHSoil::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   m++;
-  for (int k = 0; k <= NRATES; k++) saved_rates[nlocal][k] = extra[nlocal][m++];
-  if (saved_rates[nlocal][0] != 0.0) restore_pending = true;
+  for (int k = 0; k <= NSAVED; k++) integrator_state[nlocal][SAVED + k] = extra[nlocal][m++];
+  if (integrator_state[nlocal][SAVED] != 0.0) restore_pending = true;
 }
 
 int FixSPHSoil::maxsize_restart()
 {
-  return NRATES + 2;
+  return NSAVED + 2;
 }
 
 int FixSPHSoil::size_restart(int /*nlocal*/)
 {
-  return NRATES + 2;
+  return NSAVED + 2;
 }
 
 double FixSPHSoil::memory_usage()
 {
-  return (double) atom->nmax * (NRATES + 1 + NSTEP) * sizeof(double);
+  return (double) atom->nmax * NSTATE * sizeof(double);
 }
 
 /* ----------------------------------------------------------------------

@@ -70,19 +70,31 @@ class FixSPHSoil : public Fix {
   std::vector<const SPHSoil::ConstitutiveModel *> model_of_type;    // owned by the pair style
   bigint yielded_count;
 
-  // Rates of the last step (acceleration, density rate, strain rate, stress rate), saved at
-  // the end of a run and in restart files, and used by the first half step of the next run
-  // instead of the rates that setup recomputes from the full-step state: so a restarted or
-  // continued run is identical to an uninterrupted one. Row layout: flag, then NRATES values.
-  static constexpr int NRATES = 16;
-  // density rate and strain rate at the start of the step, for the Heun corrector
-  static constexpr int NSTEP = 7;
-  double **step_rates;
-  double **saved_rates;
+  // The integrator's own per-atom state, one row per atom (the current rates live in the atom
+  // style, where the pair style writes them):
+  //  - at the start of each step, the density rate and strain rate, for the Heun corrector;
+  //  - the rates of the last step (acceleration, density rate, strain rate, stress rate), saved
+  //    at the end of a run and in restart files, and used by the first half step of the next
+  //    run instead of the rates that setup recomputes from the full-step state: so a
+  //    restarted or continued run is identical to an uninterrupted one. SAVED is 1 when they
+  //    are there to be restored.
+  // Atoms migrate between the predictor and the corrector: the row travels with them.
+  enum {
+    HEUN_DRHO = 0,
+    HEUN_STRAIN_RATE = 1,       // 6
+    SAVED = 7,                  // the saved block: flag, then NSAVED rates
+    SAVED_ACCELERATION = 8,     // 3
+    SAVED_DRHO = 11,
+    SAVED_STRAIN_RATE = 12,     // 6
+    SAVED_STRESS_RATE = 18,     // 6
+    NSTATE = 24,
+    NSAVED = NSTATE - SAVED - 1
+  };
+  double **integrator_state;
   int allocated_rows;
   bool restore_pending;
-  void save_rates(int i, double *row) const;
-  void restore_rates(int i, const double *row);
+  void save_rates(int i, double *block) const;
+  void restore_rates(int i);
 
   bool integrated(int i) const
   {

@@ -15,6 +15,7 @@
 #include "neighbor.h"
 #include "soil_kernels.h"
 #include "soil_models.h"
+#include "sph_soil_pair_term.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
@@ -510,6 +511,8 @@ template <int DIMENSION> void PairSPHSoil::unpack_sums()
 
 template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
 {
+  using SPHSoil::PairPartner;
+  using SPHSoil::PairTerm;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
@@ -522,25 +525,18 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
   double *const *const c_type = sound_speed_ij;
   const int *const is_wall = type_is_wall.data();
 
-  // Monaghan's Pi_ij = (-alpha c mu + beta mu^2) / rhobar with mu = N / D, N = h_ij v_ij.x_ij,
-  // D = r^2 + 0.01 h_ij^2, written over one division: N (beta N - alpha c D) / (D^2 rhobar)
-  auto monaghan_viscosity = [alpha, beta_viscosity](double n, double d, double rhobar, double c) {
-    return n * (beta_viscosity * n - alpha * c * d) / (d * d * rhobar);
-  };
-
   pack_atoms();    // (re)allocates the packed rows: take their addresses after it
   const double *const in = packed;
   double *const out = sums;
   constexpr int DRHO = S_DRHO<DIMENSION>(), STRAIN = S_STRAIN_RATE<DIMENSION>(),
                 SPIN = S_SPIN<DIMENSION>();
+  // the stress components the 2D sums use (xx yy xy), all six in 3D
+  constexpr int NSTRESS = DIMENSION == 2 ? 4 : 6;
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
-
-  // Voigt index of tensor component (a, b)
-  static const int voigt[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
 
   // add the velocity-gradient term t^ab = (v_j - v_i)^a dW/dx_i^b, weighted, to a particle
   // (strain rate in the sums' Voigt order: xx yy xy in 2D, xx yy zz xy xz yz in 3D)
@@ -573,9 +569,18 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
     const double *si = pi + P_STRESS;
     const double mi = pi[P_MASS], rhoi = pi[P_RHO], volume_i = pi[P_VOLUME];
 
-    // i's shares of soil-soil pairs, accumulated here and stored once after the j loop
+    // i's shares, accumulated here and stored once after the j loop
     double drho_i = 0.0, force_i[3] = {0.0, 0.0, 0.0};
     double gradient_i[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+    // a soil particle's share of a pair, per unit of its partner's mass, mass and volume
+    auto add_to_i = [&](const PairTerm &term, double partner_mass, double partner_volume) {
+      drho_i += partner_mass * term.drho;
+      const double mimj = mi * partner_mass;
+      for (int a = 0; a < DIMENSION; a++) {
+        force_i[a] += mimj * term.force[a];
+        for (int b = 0; b < DIMENSION; b++) gradient_i[a][b] += partner_volume * term.gradient[a][b];
+      }
+    };
 
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
@@ -601,109 +606,72 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
       const double factor =
           Kernel::template gradient_factor_from_inverse<DIMENSION>(r, inv_h, hij * r * inv_r2);
       const double c_ij = c_type[itype][jtype];
+      PairPartner partner;
+      PairTerm term;
 
       if (!wall_i && !wall_j) {
-        // soil-soil: grad = dW/dx_i, and dW/dx_j = -grad
-        double grad[3], vij[3];
-        double vdotgrad = 0.0, vdotx = 0.0;
-        for (int a = 0; a < DIMENSION; a++) {
-          grad[a] = factor * dx[a];
-          vij[a] = vi[a] - pj[P_V + a];
-          vdotgrad += vij[a] * grad[a];
-          vdotx += vij[a] * dx[a];
-        }
-        const double mj = pj[P_MASS];
-        const bool update_j = newton_pair || j < nlocal;
-        double *oj = out + (size_t) j * SUMS;
-        drho_i += mj * vdotgrad;
-        if (update_j) oj[DRHO] += mi * vdotgrad;
-
-        // Monaghan artificial viscosity, only for approaching pairs
-        double viscosity = 0.0;
-        if (vdotx < 0.0)
-          viscosity =
-              monaghan_viscosity(hij * vdotx, r2 + 0.01 * hij * hij, 0.5 * (rhoi + pj[P_RHO]), c_ij);
+        // soil-soil, seen from i: grad = dW/dx_i; j gets the same term with the opposite
+        // force and dW/dx_j = -grad (Newton's third law)
         const double *sj = pj + P_STRESS;
-        const double mimj = mi * mj;
-        double pair_force[3];
-        if (DIMENSION == 2) {
-          // written out: the 2D case is the one the paper's problems run
-          const double sxx = si[0] + sj[0], syy = si[1] + sj[1], sxy = si[3] + sj[3];
-          pair_force[0] = mimj * ((sxx - viscosity) * grad[0] + sxy * grad[1]);
-          pair_force[1] = mimj * (sxy * grad[0] + (syy - viscosity) * grad[1]);
-        } else {
-          for (int a = 0; a < DIMENSION; a++) {
-            double sum = -viscosity * grad[a];
-            for (int b = 0; b < DIMENSION; b++) {
-              const int k = voigt[a][b];
-              sum += (si[k] + sj[k]) * grad[b];
-            }
-            pair_force[a] = mimj * sum;
-          }
-        }
         for (int a = 0; a < DIMENSION; a++) {
-          force_i[a] += pair_force[a];
-          if (update_j) oj[S_FORCE + a] -= pair_force[a];
+          partner.dx[a] = dx[a];
+          partner.grad[a] = factor * dx[a];
+          partner.velocity[a] = vi[a] - pj[P_V + a];
         }
-
-        // g_i += V_j (v_j - v_i) x grad, and g_j += V_i (v_i - v_j) x (-grad): the same tensor
-        double t[3][3];
-        const double volume_j = pj[P_VOLUME];
-        for (int a = 0; a < DIMENSION; a++)
-          for (int b = 0; b < DIMENSION; b++) {
-            t[a][b] = -vij[a] * grad[b];
-            gradient_i[a][b] += volume_j * t[a][b];
-          }
-        if (update_j) add_gradient(j, volume_i, t);
+        for (int k = 0; k < NSTRESS; k++) partner.stress_sum[k] = si[k] + sj[k];
+        partner.mean_density = 0.5 * (rhoi + pj[P_RHO]);
+        SPHSoil::soil_pair_term<DIMENSION>(partner, r2, hij, c_ij, alpha, beta_viscosity, term);
+        const double mj = pj[P_MASS];
+        add_to_i(term, mj, pj[P_VOLUME]);
+        if (newton_pair || j < nlocal) {
+          double *oj = out + (size_t) j * SUMS;
+          oj[DRHO] += mi * term.drho;
+          const double mimj = mi * mj;
+          for (int a = 0; a < DIMENSION; a++) oj[S_FORCE + a] -= mimj * term.force[a];
+          // g_j += V_i (v_i - v_j) x (-grad): the same tensor
+          add_gradient(j, volume_i, term.gradient);
+        }
         continue;
       }
 
-      // soil particle s and wall particle w (Bui 2008): the wall particle moves with
+      // soil particle s and the image of wall particle w (Bui 2008): the image moves with
       // -(d_w/d_s) v_s, limited so that v_s - v_w = beta v_s, beta = min(1.5, 1 + d_w/d_s),
-      // and takes the stress and density of s
+      // and has the stress and density of s; only s takes a share
       const int soil = wall_i ? j : i, wall = wall_i ? i : j;
       if (!newton_pair && soil >= nlocal) continue;
       const double *ps = in + (size_t) soil * PACKED;
-      double *os = out + (size_t) soil * SUMS;
       const double sign = wall_i ? -1.0 : 1.0;    // x_s - x_w = sign * dx
-      double d[3], grad[3];
-      for (int a = 0; a < DIMENSION; a++) {
-        d[a] = sign * dx[a];
-        grad[a] = factor * d[a];    // dW/dx_s
-      }
       const double *n = wall_normal[wall];
       double ds = -wall_distance[wall];
-      for (int a = 0; a < DIMENSION; a++) ds += d[a] * n[a];
+      for (int a = 0; a < DIMENSION; a++) {
+        partner.dx[a] = sign * dx[a];
+        partner.grad[a] = factor * partner.dx[a];    // dW/dx_s
+        ds += partner.dx[a] * n[a];
+      }
       const double beta = ds > 0.0 ? MIN(1.5, 1.0 + wall_distance[wall] / ds) : 1.5;
       const double *vs = ps + P_V;
-      double vsw[3];
       if (freeslip) {
         double vn = 0.0;
         for (int a = 0; a < DIMENSION; a++) vn += vs[a] * n[a];
-        for (int a = 0; a < DIMENSION; a++) vsw[a] = beta * vn * n[a];
+        for (int a = 0; a < DIMENSION; a++) partner.velocity[a] = beta * vn * n[a];
       } else {
-        for (int a = 0; a < DIMENSION; a++) vsw[a] = beta * vs[a];
+        for (int a = 0; a < DIMENSION; a++) partner.velocity[a] = beta * vs[a];
       }
-      double vdotgrad = 0.0, vdotx = 0.0;
-      for (int a = 0; a < DIMENSION; a++) {
-        vdotgrad += vsw[a] * grad[a];
-        vdotx += vsw[a] * d[a];
-      }
-      const double mw = in[(size_t) wall * PACKED + P_MASS], rhos = ps[P_RHO];
-      os[DRHO] += mw * vdotgrad;
-      double viscosity = 0.0;
-      if (vdotx < 0.0) viscosity = monaghan_viscosity(hij * vdotx, r2 + 0.01 * hij * hij, rhos, c_ij);
       const double *ss = ps + P_STRESS;
-      const double mswall = ps[P_MASS] * mw;
-      for (int a = 0; a < DIMENSION; a++) {
-        double sum = -viscosity * grad[a];
-        for (int b = 0; b < DIMENSION; b++) sum += 2.0 * ss[voigt[a][b]] * grad[b];
-        os[S_FORCE + a] += mswall * sum;
+      for (int k = 0; k < NSTRESS; k++) partner.stress_sum[k] = 2.0 * ss[k];
+      const double rhos = ps[P_RHO];
+      partner.mean_density = rhos;
+      SPHSoil::soil_pair_term<DIMENSION>(partner, r2, hij, c_ij, alpha, beta_viscosity, term);
+      const double mw = in[(size_t) wall * PACKED + P_MASS];
+      if (soil == i) {
+        add_to_i(term, mw, mw / rhos);
+      } else {
+        double *os = out + (size_t) soil * SUMS;
+        os[DRHO] += mw * term.drho;
+        const double msmw = ps[P_MASS] * mw;
+        for (int a = 0; a < DIMENSION; a++) os[S_FORCE + a] += msmw * term.force[a];
+        add_gradient(soil, mw / rhos, term.gradient);
       }
-      double t[3][3];
-      for (int a = 0; a < DIMENSION; a++)
-        for (int b = 0; b < DIMENSION; b++) t[a][b] = -vsw[a] * grad[b];
-      add_gradient(soil, mw / rhos, t);
     }
 
     double *oi = out + (size_t) i * SUMS;
