@@ -3,6 +3,7 @@
 #include "soil_drucker_prager.h"
 #include "soil_material.h"
 #include "soil_models.h"
+#include "soil_model_testing.h"
 
 #include "gtest/gtest.h"
 
@@ -22,14 +23,7 @@ typedef double Matrix[3][3];
 DruckerPragerParameters soil(double phi, double psi, double c, double bulk = 1.5e6, double nu = 0.3,
                              DruckerPragerFit fit = DruckerPragerFit::associated)
 {
-  DruckerPragerParameters p;
-  p.fit = fit;
-  p.bulk_modulus = bulk;
-  p.poisson_ratio = nu;
-  p.friction_angle = phi;
-  p.dilatancy_angle = psi;
-  p.cohesion = c;
-  return p;
+  return DruckerPragerParameters(SPHSoilTesting::frictional(phi, psi, c, bulk, nu), fit);
 }
 
 void to_matrix(const double v[6], Matrix m)
@@ -197,27 +191,18 @@ TEST(DruckerPrager, NonassociatedFitConstants)
 // the associated fit is weaker by 3 alpha_phi against sin(phi).
 TEST(DruckerPrager, NonassociatedFitIsMohrCoulombInPlaneStrainWithoutDilatancy)
 {
-  const double gammadot = 1.0, dt = 1.0e-5, p0 = 1.0e5, phi = 30.0, c = 5.0e3;
-  const double strain_rate[6] = {0.0, 0.0, 0.0, 0.5 * gammadot, 0.0, 0.0};
-  const double spin[3] = {0.5 * gammadot, 0.0, 0.0};
+  const double p0 = 1.0e5, phi = 30.0, c = 5.0e3;
   double strength[2];
   for (int k = 0; k < 2; k++) {
     DruckerPragerParameters p = soil(phi, 0.0, c);
     p.fit = k ? DruckerPragerFit::nonassociated : DruckerPragerFit::associated;
     const DruckerPrager model(p);
-    double stress[6] = {-p0, -p0, -p0, 0.0, 0.0, 0.0};
-    for (int n = 0; n < 20000; n++) {    // shear strain 0.2, far past first yield
-      double rate[6];
-      model.stress_rate(stress, strain_rate, spin, rate);
-      for (int m = 0; m < 6; m++) stress[m] += dt * rate[m];
-      model.return_to_admissible(stress);
-    }
+    double stress[6];
+    SPHSoilTesting::simple_shear(model, p0, stress);
     ASSERT_TRUE(model.on_yield_surface(stress));
     const double mean = 0.5 * (stress[0] + stress[1]);
     EXPECT_NEAR(stress[2], mean, 1.0e-9 * p0);    // s_zz = 0
-    const double half_difference = 0.5 * (stress[0] - stress[1]);
-    const double tau = std::sqrt(half_difference * half_difference + stress[3] * stress[3]);
-    strength[k] = tau / (c * std::cos(phi * PI / 180.0) - mean * std::sin(phi * PI / 180.0));
+    strength[k] = SPHSoilTesting::in_plane_shear(stress) / SPHSoilTesting::mohr_coulomb_strength(c, phi, stress);
   }
   EXPECT_NEAR(strength[1], 1.0, 1.0e-9);
   EXPECT_NEAR(strength[0], 0.96, 0.01);    // 3 tan(phi)/sqrt(9 + 12 tan^2 phi) / sin(phi) = 0.961

@@ -1,5 +1,6 @@
 // Mohr-Coulomb soil model (doc/theory.rst section 3.10): the principal stresses, simple shear against
 // the analytic strength, the return to the face, the two edges and the apex, objectivity, Tresca.
+#include "soil_model_testing.h"
 #include "soil_models.h"
 #include "soil_mohr_coulomb.h"
 
@@ -16,16 +17,7 @@ namespace {
 
 constexpr double PI = 3.14159265358979323846;
 
-FrictionalParameters soil(double phi, double psi, double c, double bulk = 1.5e6, double nu = 0.3)
-{
-  FrictionalParameters p;
-  p.bulk_modulus = bulk;
-  p.poisson_ratio = nu;
-  p.friction_angle = phi;
-  p.dilatancy_angle = psi;
-  p.cohesion = c;
-  return p;
-}
+using SPHSoilTesting::frictional;
 
 // R sigma R^T of a Voigt tensor
 void rotate(const double r[3][3], const double v[6], double out[6])
@@ -110,29 +102,21 @@ TEST(MohrCoulomb, PrincipalStressesAndVectors)
 // tau = c cos(phi) - sigma_m sin(phi) (tension positive), sigma_zz the intermediate stress.
 TEST(MohrCoulomb, PlaneStrainSimpleShearReachesTheAnalyticStrength)
 {
-  const double gammadot = 1.0, dt = 1.0e-5, p0 = 1.0e5;
-  const double strain_rate[6] = {0.0, 0.0, 0.0, 0.5 * gammadot, 0.0, 0.0};
-  const double spin[3] = {0.5 * gammadot, 0.0, 0.0};
+  const double p0 = 1.0e5;
   for (double phi : {0.0, 19.8, 30.0, 45.0})
     for (double c : {0.0, 5.0e3}) {
       if (phi == 0.0 && c == 0.0) continue;
-      const MohrCoulomb model(soil(phi, 0.0, c));
-      double stress[6] = {-p0, -p0, -p0, 0.0, 0.0, 0.0};
-      for (int n = 0; n < 20000; n++) {    // shear strain 0.2, far past first yield
-        double rate[6];
-        model.stress_rate(stress, strain_rate, spin, rate);
-        for (int m = 0; m < 6; m++) stress[m] += dt * rate[m];
-        model.return_to_admissible(stress);
-      }
+      const MohrCoulomb model(frictional(phi, 0.0, c));
+      double stress[6];
+      SPHSoilTesting::simple_shear(model, p0, stress);
       ASSERT_TRUE(model.on_yield_surface(stress));
       const double mean = 0.5 * (stress[0] + stress[1]);
       EXPECT_NEAR(mean, -p0, 1.0e-10 * p0);
       EXPECT_EQ(stress[2], -p0);
       EXPECT_EQ(stress[4], 0.0);
       EXPECT_EQ(stress[5], 0.0);
-      const double half_difference = 0.5 * (stress[0] - stress[1]);
-      const double tau = std::sqrt(half_difference * half_difference + stress[3] * stress[3]);
-      const double strength = c * std::cos(phi * PI / 180.0) - mean * std::sin(phi * PI / 180.0);
+      const double tau = SPHSoilTesting::in_plane_shear(stress);
+      const double strength = SPHSoilTesting::mohr_coulomb_strength(c, phi, stress);
       EXPECT_NEAR(tau / strength, 1.0, 1.0e-10) << "phi " << phi << " c " << c;
     }
 }
@@ -144,7 +128,7 @@ TEST(MohrCoulomb, PlaneStrainSimpleShearReachesTheAnalyticStrength)
 TEST(MohrCoulomb, ReturnToFaceEdgesAndApexIsConsistent)
 {
   const double phi = 30.0, psi = 10.0, c = 1.0e4, bulk = 1.5e6, nu = 0.3;
-  const MohrCoulomb model(soil(phi, psi, c, bulk, nu));
+  const MohrCoulomb model(frictional(phi, psi, c, bulk, nu));
   const double shear = model.shear_modulus(), lame = bulk - 2.0 * shear / 3.0;
   const double sin_psi = std::sin(psi * PI / 180.0);
   const double up = 2.0 * shear * (1.0 + sin_psi) + 2.0 * lame * sin_psi;
@@ -220,7 +204,7 @@ TEST(MohrCoulomb, ReturnToFaceEdgesAndApexIsConsistent)
 // the return commutes with rotations (an isotropic model), and keeps plane strain plane
 TEST(MohrCoulomb, ReturnIsObjectiveAndKeepsPlaneStrain)
 {
-  const MohrCoulomb model(soil(35.0, 5.0, 2.0e4));
+  const MohrCoulomb model(frictional(35.0, 5.0, 2.0e4));
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int returned = 0;
@@ -251,7 +235,7 @@ TEST(MohrCoulomb, ReturnIsObjectiveAndKeepsPlaneStrain)
 TEST(MohrCoulomb, FrictionlessIsTresca)
 {
   const double c = 5.0e3;
-  const MohrCoulomb model(soil(0.0, 0.0, c));
+  const MohrCoulomb model(frictional(0.0, 0.0, c));
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int n = 0; n < 5000; n++) {
@@ -271,7 +255,7 @@ TEST(MohrCoulomb, FrictionlessIsTresca)
 TEST(MohrCoulomb, ElasticRateAndUniaxialStrength)
 {
   const double bulk = 1.5e6, nu = 0.3, phi = 30.0, c = 1.0e4;
-  const MohrCoulomb model(soil(phi, 0.0, c, bulk, nu));
+  const MohrCoulomb model(frictional(phi, 0.0, c, bulk, nu));
   const double shear = model.shear_modulus();
   const double stress[6] = {-1.0e4, -2.0e4, -1.5e4, 3.0e3, -1.0e3, 2.0e3};
   const double strain_rate[6] = {0.1, -0.2, 0.05, 0.3, -0.1, 0.2};

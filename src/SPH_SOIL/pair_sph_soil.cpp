@@ -512,7 +512,6 @@ template <int DIMENSION> void PairSPHSoil::unpack_sums()
 template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
 {
   using SPHSoil::PairPartner;
-  using SPHSoil::PairTerm;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
@@ -530,8 +529,9 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
   double *const out = sums;
   constexpr int DRHO = S_DRHO<DIMENSION>(), STRAIN = S_STRAIN_RATE<DIMENSION>(),
                 SPIN = S_SPIN<DIMENSION>();
-  // the stress components the 2D sums use (xx yy xy), all six in 3D
-  constexpr int NSTRESS = DIMENSION == 2 ? 4 : 6;
+  // the stress components the sums use: xx yy xy in 2D, all six in 3D
+  static const int stress_components[6] = {0, 1, 3, 2, 4, 5};
+  constexpr int NSTRESS = DIMENSION == 2 ? 3 : 6;
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -572,15 +572,6 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
     // i's shares, accumulated here and stored once after the j loop
     double drho_i = 0.0, force_i[3] = {0.0, 0.0, 0.0};
     double gradient_i[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
-    // a soil particle's share of a pair, per unit of its partner's mass, mass and volume
-    auto add_to_i = [&](const PairTerm &term, double partner_mass, double partner_volume) {
-      drho_i += partner_mass * term.drho;
-      const double mimj = mi * partner_mass;
-      for (int a = 0; a < DIMENSION; a++) {
-        force_i[a] += mimj * term.force[a];
-        for (int b = 0; b < DIMENSION; b++) gradient_i[a][b] += partner_volume * term.gradient[a][b];
-      }
-    };
 
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
@@ -606,11 +597,15 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
       const double factor =
           Kernel::template gradient_factor_from_inverse<DIMENSION>(r, inv_h, hij * r * inv_r2);
       const double c_ij = c_type[itype][jtype];
+
+      using SPHSoil::pair_density_rate;
+      using SPHSoil::pair_force;
+      using SPHSoil::pair_velocity_gradient;
       PairPartner partner;
-      PairTerm term;
+      double approach, force[3], t[3][3];
 
       if (!wall_i && !wall_j) {
-        // soil-soil, seen from i: grad = dW/dx_i; j gets the same term with the opposite
+        // soil-soil, seen from i: grad = dW/dx_i; j gets the same terms with the opposite
         // force and dW/dx_j = -grad (Newton's third law)
         const double *sj = pj + P_STRESS;
         for (int a = 0; a < DIMENSION; a++) {
@@ -618,19 +613,29 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
           partner.grad[a] = factor * dx[a];
           partner.velocity[a] = vi[a] - pj[P_V + a];
         }
-        for (int k = 0; k < NSTRESS; k++) partner.stress_sum[k] = si[k] + sj[k];
-        partner.mean_density = 0.5 * (rhoi + pj[P_RHO]);
-        SPHSoil::soil_pair_term<DIMENSION>(partner, r2, hij, c_ij, alpha, beta_viscosity, term);
-        const double mj = pj[P_MASS];
-        add_to_i(term, mj, pj[P_VOLUME]);
-        if (newton_pair || j < nlocal) {
-          double *oj = out + (size_t) j * SUMS;
-          oj[DRHO] += mi * term.drho;
-          const double mimj = mi * mj;
-          for (int a = 0; a < DIMENSION; a++) oj[S_FORCE + a] -= mimj * term.force[a];
-          // g_j += V_i (v_i - v_j) x (-grad): the same tensor
-          add_gradient(j, volume_i, term.gradient);
+        for (int m = 0; m < NSTRESS; m++) {
+          const int k = stress_components[m];
+          partner.stress_sum[k] = si[k] + sj[k];
         }
+        partner.mean_density = 0.5 * (rhoi + pj[P_RHO]);
+        const double mj = pj[P_MASS];
+        const bool update_j = newton_pair || j < nlocal;
+        double *oj = out + (size_t) j * SUMS;
+
+        const double drho = pair_density_rate<DIMENSION>(partner, approach);
+        drho_i += mj * drho;
+        if (update_j) oj[DRHO] += mi * drho;
+        pair_force<DIMENSION>(partner, approach, r2, hij, c_ij, alpha, beta_viscosity, mi * mj, force);
+        for (int a = 0; a < DIMENSION; a++) {
+          force_i[a] += force[a];
+          if (update_j) oj[S_FORCE + a] -= force[a];
+        }
+        // g_i += V_j (v_j - v_i) x grad, and g_j += V_i (v_i - v_j) x (-grad): the same tensor
+        pair_velocity_gradient<DIMENSION>(partner, t);
+        const double volume_j = pj[P_VOLUME];
+        for (int a = 0; a < DIMENSION; a++)
+          for (int b = 0; b < DIMENSION; b++) gradient_i[a][b] += volume_j * t[a][b];
+        if (update_j) add_gradient(j, volume_i, t);
         continue;
       }
 
@@ -641,37 +646,37 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
       if (!newton_pair && soil >= nlocal) continue;
       const double *ps = in + (size_t) soil * PACKED;
       const double sign = wall_i ? -1.0 : 1.0;    // x_s - x_w = sign * dx
-      const double *n = wall_normal[wall];
+      const double *normal = wall_normal[wall];
       double ds = -wall_distance[wall];
       for (int a = 0; a < DIMENSION; a++) {
         partner.dx[a] = sign * dx[a];
         partner.grad[a] = factor * partner.dx[a];    // dW/dx_s
-        ds += partner.dx[a] * n[a];
+        ds += partner.dx[a] * normal[a];
       }
       const double beta = ds > 0.0 ? MIN(1.5, 1.0 + wall_distance[wall] / ds) : 1.5;
       const double *vs = ps + P_V;
       if (freeslip) {
         double vn = 0.0;
-        for (int a = 0; a < DIMENSION; a++) vn += vs[a] * n[a];
-        for (int a = 0; a < DIMENSION; a++) partner.velocity[a] = beta * vn * n[a];
+        for (int a = 0; a < DIMENSION; a++) vn += vs[a] * normal[a];
+        for (int a = 0; a < DIMENSION; a++) partner.velocity[a] = beta * vn * normal[a];
       } else {
         for (int a = 0; a < DIMENSION; a++) partner.velocity[a] = beta * vs[a];
       }
       const double *ss = ps + P_STRESS;
-      for (int k = 0; k < NSTRESS; k++) partner.stress_sum[k] = 2.0 * ss[k];
+      for (int m = 0; m < NSTRESS; m++) {
+        const int k = stress_components[m];
+        partner.stress_sum[k] = 2.0 * ss[k];
+      }
       const double rhos = ps[P_RHO];
       partner.mean_density = rhos;
-      SPHSoil::soil_pair_term<DIMENSION>(partner, r2, hij, c_ij, alpha, beta_viscosity, term);
       const double mw = in[(size_t) wall * PACKED + P_MASS];
-      if (soil == i) {
-        add_to_i(term, mw, mw / rhos);
-      } else {
-        double *os = out + (size_t) soil * SUMS;
-        os[DRHO] += mw * term.drho;
-        const double msmw = ps[P_MASS] * mw;
-        for (int a = 0; a < DIMENSION; a++) os[S_FORCE + a] += msmw * term.force[a];
-        add_gradient(soil, mw / rhos, term.gradient);
-      }
+      double *os = out + (size_t) soil * SUMS;
+      os[DRHO] += mw * pair_density_rate<DIMENSION>(partner, approach);
+      pair_force<DIMENSION>(partner, approach, r2, hij, c_ij, alpha, beta_viscosity, ps[P_MASS] * mw,
+                            force);
+      for (int a = 0; a < DIMENSION; a++) os[S_FORCE + a] += force[a];
+      pair_velocity_gradient<DIMENSION>(partner, t);
+      add_gradient(soil, mw / rhos, t);
     }
 
     double *oi = out + (size_t) i * SUMS;
