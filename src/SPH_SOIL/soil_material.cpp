@@ -16,9 +16,9 @@ bool SPHSoil::material_from_words(const std::string &name, const std::vector<std
 {
   material = SoilMaterial();
   material.name = name;
-  const std::string usage = "'soil rho0 model parameters' (models: " + model_keywords() + ") or 'wall'";
   if (words.empty()) {
-    error = "material " + name + ": expected " + usage;
+    error = "material " + name + ": expected 'soil rho0 model parameters' (models: " +
+        model_keywords() + ") or 'wall'";
     return false;
   }
   if (words[0] == "wall") {
