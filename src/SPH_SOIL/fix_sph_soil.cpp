@@ -86,7 +86,7 @@ FixSPHSoil::~FixSPHSoil()
 
 int FixSPHSoil::setmask()
 {
-  return INITIAL_INTEGRATE | FINAL_INTEGRATE | END_OF_STEP;
+  return INITIAL_INTEGRATE | POST_INTEGRATE | FINAL_INTEGRATE | END_OF_STEP;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -98,7 +98,11 @@ void FixSPHSoil::init()
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
 
   model_of_type.assign(atom->ntypes + 1, nullptr);
-  for (int type = 1; type <= atom->ntypes; type++) model_of_type[type] = pair->model(type);
+  wall_type.assign(atom->ntypes + 1, 0);
+  for (int type = 1; type <= atom->ntypes; type++) {
+    model_of_type[type] = pair->model(type);
+    wall_type[type] = pair->is_wall_type(type) ? 1 : 0;
+  }
 
   // one integrator per particle: two fixes sph/soil over the same particles would each
   // advance them, a step of 2 dt
@@ -130,6 +134,7 @@ void FixSPHSoil::init()
   for (int i = 0; i < nlocal; i++)
     if (integrated(i))
       for (int k = 0; k < 3; k++) atom->vest[i][k] = atom->v[i][k];
+  walls_velocity_to_estimate();
 
   if (cfl > 0.0) {
     const double dt = stable_timestep();
@@ -220,6 +225,28 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
       first_unstable = i;
   }
   stop_if_unstable(first_unstable);
+}
+
+/* ----------------------------------------------------------------------
+   The pair style reads every particle's velocity from vest (the field that travels to
+   ghosts every step). A wall particle's is its own velocity, which a fix that moves walls
+   (move, rigid, ...) has set by now, whatever the order of the fixes; 0 for a wall at rest.
+   Every fix sph/soil does it for all wall particles: walls belong to no soil group.
+------------------------------------------------------------------------- */
+
+void FixSPHSoil::post_integrate()
+{
+  walls_velocity_to_estimate();
+}
+
+void FixSPHSoil::walls_velocity_to_estimate()
+{
+  double **v = atom->v, **vest = atom->vest;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++)
+    if (wall_type[type[i]])
+      for (int k = 0; k < 3; k++) vest[i][k] = v[i][k];
 }
 
 /* ----------------------------------------------------------------------

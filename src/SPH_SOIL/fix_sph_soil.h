@@ -37,6 +37,7 @@ class FixSPHSoil : public Fix {
   void init() override;
   void setup(int) override;
   void initial_integrate(int) override;
+  void post_integrate() override;
   void final_integrate() override;
   void end_of_step() override;
   void reset_dt() override;
@@ -68,6 +69,8 @@ class FixSPHSoil : public Fix {
   class AtomVecSPHSoil *avec;
   class PairSPHSoil *pair;
   std::vector<const SPHSoil::ConstitutiveModel *> model_of_type;    // owned by the pair style
+  std::vector<int> wall_type;    // per type: 1 for the pair style's wall types
+  void walls_velocity_to_estimate();
   bigint yielded_count;
 
   // The integrator's own per-atom state, one row per atom (the current rates live in the atom

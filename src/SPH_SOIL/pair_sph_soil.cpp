@@ -462,6 +462,8 @@ void PairSPHSoil::pack_atoms()
     double *row = packed + (size_t) i * PACKED;
     const double inv_rho = 1.0 / rho[i];
     const double inv_rho2 = inv_rho * inv_rho;
+    // soil: fix sph/soil's estimate of v(t + dt); a wall: its velocity (fix sph/soil copies it
+    // there after the fixes that move walls have run)
     for (int a = 0; a < 3; a++) {
       row[P_X + a] = x[i][a];
       row[P_V + a] = vest[i][a];
@@ -639,12 +641,17 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
         continue;
       }
 
-      // soil particle s and the image of wall particle w (Bui 2008): the image moves with
-      // -(d_w/d_s) v_s, limited so that v_s - v_w = beta v_s, beta = min(1.5, 1 + d_w/d_s),
-      // and has the stress and density of s; only s takes a share
+      // soil particle s and the image of wall particle w (Bui 2008): relative to the wall, the
+      // image moves with -(d_w/d_s) (v_s - v_w), limited so that v_s - v_image =
+      // beta (v_s - v_w), beta = min(1.5, 1 + d_w/d_s) (free-slip: the normal part only), and
+      // has the stress and density of s. s takes its share, w the opposite force (Newton's
+      // third law: the soil's force on the structure); a wall moved by a fix (move, rigid)
+      // brings its velocity, a wall at rest has v_w = 0 and the terms of a static wall.
       const int soil = wall_i ? j : i, wall = wall_i ? i : j;
-      if (!newton_pair && soil >= nlocal) continue;
+      const bool update_soil = newton_pair || soil < nlocal;
+      const bool update_wall = newton_pair || wall < nlocal;
       const double *ps = in + (size_t) soil * PACKED;
+      const double *pw = in + (size_t) wall * PACKED;
       const double sign = wall_i ? -1.0 : 1.0;    // x_s - x_w = sign * dx
       const double *normal = wall_normal[wall];
       double ds = -wall_distance[wall];
@@ -654,13 +661,14 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
         ds += partner.dx[a] * normal[a];
       }
       const double beta = ds > 0.0 ? MIN(1.5, 1.0 + wall_distance[wall] / ds) : 1.5;
-      const double *vs = ps + P_V;
+      double relative[3];
+      for (int a = 0; a < DIMENSION; a++) relative[a] = ps[P_V + a] - pw[P_V + a];
       if (freeslip) {
         double vn = 0.0;
-        for (int a = 0; a < DIMENSION; a++) vn += vs[a] * normal[a];
+        for (int a = 0; a < DIMENSION; a++) vn += relative[a] * normal[a];
         for (int a = 0; a < DIMENSION; a++) partner.velocity[a] = beta * vn * normal[a];
       } else {
-        for (int a = 0; a < DIMENSION; a++) partner.velocity[a] = beta * vs[a];
+        for (int a = 0; a < DIMENSION; a++) partner.velocity[a] = beta * relative[a];
       }
       const double *ss = ps + P_STRESS;
       for (int m = 0; m < NSTRESS; m++) {
@@ -669,11 +677,17 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
       }
       const double rhos = ps[P_RHO];
       partner.mean_density = rhos;
-      const double mw = in[(size_t) wall * PACKED + P_MASS];
-      double *os = out + (size_t) soil * SUMS;
-      os[DRHO] += mw * pair_density_rate<DIMENSION>(partner, approach);
+      const double mw = pw[P_MASS];
+      const double drho = pair_density_rate<DIMENSION>(partner, approach);
       pair_force<DIMENSION>(partner, approach, r2, hij, c_ij, alpha, beta_viscosity, ps[P_MASS] * mw,
                             force);
+      if (update_wall) {
+        double *ow = out + (size_t) wall * SUMS;
+        for (int a = 0; a < DIMENSION; a++) ow[S_FORCE + a] -= force[a];
+      }
+      if (!update_soil) continue;
+      double *os = out + (size_t) soil * SUMS;
+      os[DRHO] += mw * drho;
       for (int a = 0; a < DIMENSION; a++) os[S_FORCE + a] += force[a];
       pair_velocity_gradient<DIMENSION>(partner, t);
       add_gradient(soil, mw / rhos, t);

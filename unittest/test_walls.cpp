@@ -1,0 +1,133 @@
+// Soil against wall particles moved by LAMMPS fixes: the image of a moving wall moves with it,
+// and the soil's force on the wall particles is the opposite of the wall's force on the soil.
+#include "sph_soil_testing.h"
+
+#include "atom_vec_sph_soil.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace LAMMPS_NS;
+using namespace SphSoilTesting;
+
+namespace {
+
+class Walls : public LAMMPSTest {
+ protected:
+  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
+
+  // a 2D block of soil (20 x 10 particles) on a floor against a left wall
+  void soil_in_a_corner(const std::string &newton = "on")
+  {
+    HIDE_OUTPUT([&] {
+      command("newton " + newton);
+      command("dimension 2");
+      command("boundary f f p");
+      command("atom_style sph/soil");
+      command("atom_modify map array");
+      command("lattice sq 0.002 origin 0.5 0.5 0");
+      command("region box block -0.01 0.06 -0.01 0.04 -0.001 0.001 units box");
+      command("create_box 2 box");
+      command("region soil block 0 0.04 0 0.02 INF INF units box");
+      command("region floor block -0.006 0.046 -0.006 0 INF INF units box");
+      command("region left block -0.006 0 0 0.03 INF INF units box");
+      command("create_atoms 1 region soil");
+      command("create_atoms 2 region floor");
+      command("create_atoms 2 region left");
+      command("group soil type 1");
+      command("group floor region floor");
+      command("group left region left");
+      command("group wall type 2");
+      command("sph_soil/set all mass $(2650*0.002*0.002) h 0.0024 density 2650");
+      command("sph_soil/set floor wall 0 0 0 0 1 0");
+      command("sph_soil/set left wall 0 0 0 1 0 0");
+      command("pair_style sph/soil alpha 1 beta 1");
+      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
+      command("pair_coeff 2 2 wall");
+      command("fix integrate soil sph/soil");
+      command("neighbor 0.0005 bin");
+      command("neigh_modify every 1 delay 0 check yes");
+      command("timestep 1.0e-5");
+      command("thermo 0");
+    });
+  }
+
+  // the largest |strain rate| component over the soil particles of all ranks
+  double max_soil_strain_rate()
+  {
+    auto avec = soil_avec(lmp);
+    double local = 0.0, global = 0.0;
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      if (lmp->atom->type[i] == 1)
+        for (int k = 0; k < 6; k++) local = std::max(local, std::fabs(avec->strain_rate[i][k]));
+    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    return global;
+  }
+
+  // sum of f over the atoms of `type` (0: all), and the sum of |f| over all atoms
+  std::vector<double> force_sums(int type)
+  {
+    std::vector<double> local(4, 0.0), global(4, 0.0);
+    auto atom = lmp->atom;
+    for (int i = 0; i < atom->nlocal; i++) {
+      for (int a = 0; a < 2; a++) {
+        if (type == 0 || atom->type[i] == type) local[a] += atom->f[i][a];
+        local[2 + a] += std::fabs(atom->f[i][a]);
+      }
+    }
+    MPI_Allreduce(local.data(), global.data(), 4, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return global;
+  }
+};
+
+}    // namespace
+
+// Everything translating at the same velocity, the walls moved by fix move, the soil by fix
+// sph/soil, no stress and no gravity: the soil sees walls at rest relative to it and stays
+// unstrained. (With the image of a wall at rest, -(d_w/d_s) v_s, the soil next to the walls
+// would shear at about beta v / h = 80 /s.)
+TEST_F(Walls, RigidTranslationWithMovingWallsLeavesTheSoilUnstrained)
+{
+  soil_in_a_corner();
+  HIDE_OUTPUT([&] {
+    // the walls move from the start: fix move sets their velocity from its first step on,
+    // the force evaluation of the set-up needs it too
+    command("velocity all set 0.1 0.05 0 units box");
+    command("fix slide wall move linear 0.1 0.05 NULL units box");
+    command("run 100 post no");
+  });
+  EXPECT_LE(max_soil_strain_rate(), 1.0e-12);
+  auto state = gather_state(lmp);
+  for (const auto &entry : state) {
+    const auto &s = entry.second;
+    EXPECT_NEAR(s[4], 0.1, 1.0e-14) << "atom " << entry.first;
+    EXPECT_NEAR(s[5], 0.05, 1.0e-14) << "atom " << entry.first;
+  }
+}
+
+// Without body forces the force on soil plus walls sums to zero (Newton's third law: the wall
+// particles take the opposite of the soil's share of every soil-wall pair), and the walls'
+// share is the soil's force on them, with and without newton_pair.
+TEST_F(Walls, SoilAndWallForcesObeyNewtonsThirdLaw)
+{
+  for (const std::string newton : {"on", "off"}) {
+    if (newton == "off") HIDE_OUTPUT([&] { command("clear"); command("units si"); });
+    soil_in_a_corner(newton);
+    HIDE_OUTPUT([&] {
+      command("variable vx atom 0.05*sin(2*PI*y/0.02)");
+      command("velocity soil set v_vx -0.02 0 units box");
+      command("sph_soil/set soil stress -1000 -1500 -1000 100 0 0");
+      command("run 20 post no");
+    });
+    const auto all = force_sums(0), soil = force_sums(1), wall = force_sums(2);
+    const double scale = all[2] + all[3];
+    ASSERT_GT(scale, 0.0);
+    for (int a = 0; a < 2; a++) {
+      EXPECT_NEAR(all[a], 0.0, 1.0e-13 * scale) << "newton " << newton << " component " << a;
+      EXPECT_NEAR(wall[a], -soil[a], 1.0e-13 * scale) << "newton " << newton << " component " << a;
+    }
+    // the soil pushes the floor down and the left wall to the left
+    EXPECT_LT(wall[1], -0.01 * scale) << "newton " << newton;
+    EXPECT_LT(wall[0], -0.001 * scale) << "newton " << newton;
+  }
+}
