@@ -131,3 +131,62 @@ TEST_F(Walls, SoilAndWallForcesObeyNewtonsThirdLaw)
     EXPECT_LT(wall[0], -0.001 * scale) << "newton " << newton;
   }
 }
+
+// A column of soil in its at-rest state between smooth (free-slip) walls stays at rest: the
+// image behind a free-slip wall has the mirrored stress, so the wall carries no shear traction
+// and the horizontal force on a side wall stays at 0.5 K0 gamma H^2. (With the soil's own stress
+// on the image, as behind a no-slip wall, the walls' shear traction drove the column away from
+// rest: the side force rose to 1.7 times the at-rest value within 0.2 s.)
+TEST_F(Walls, AtRestColumnBetweenFreeSlipWallsStaysAtRest)
+{
+  HIDE_OUTPUT([&] {
+    command("dimension 2");
+    command("boundary f f p");
+    command("atom_style sph/soil");
+    command("atom_modify map array");
+    command("lattice sq 0.004 origin 0.5 0.5 0");
+    command("region box block -0.02 0.12 -0.02 0.14 -0.001 0.001 units box");
+    command("create_box 2 box");
+    command("region soil block 0 0.1 0 0.1 INF INF units box");
+    command("region floor block -0.012 0.112 -0.012 0 INF INF units box");
+    command("region left block -0.012 0 0 0.12 INF INF units box");
+    command("region right block 0.1 0.112 0 0.12 INF INF units box");
+    command("create_atoms 1 region soil");
+    command("create_atoms 2 region floor");
+    command("create_atoms 2 region left");
+    command("create_atoms 2 region right");
+    command("group soil type 1");
+    command("group floor region floor");
+    command("group left region left");
+    command("group right region right");
+    command("sph_soil/set all mass $(1850*0.004*0.004) h 0.0048 density 1850");
+    command("sph_soil/set soil geostatic 0.1 1850 9.81 0.5");
+    command("sph_soil/set floor wall 0 0 0 0 1 0");
+    command("sph_soil/set left wall 0 0 0 1 0 0");
+    command("sph_soil/set right wall 0.1 0 0 -1 0 0");
+    command("pair_style sph/soil alpha 1 beta 1 wall freeslip");
+    command("pair_coeff 1 1 soil 1850 1.5e6 0.3 30 0 0");
+    command("pair_coeff 2 2 wall");
+    command("fix gravity soil gravity 9.81 vector 0 -1 0");
+    command("fix integrate soil sph/soil");
+    command("timestep 1.0e-5");
+    command("thermo 0");
+    command("run 5000 post no");
+  });
+  const double at_rest = 0.5 * 0.5 * 1850 * 9.81 * 0.1 * 0.1;    // 0.5 K0 gamma H^2
+  auto right = force_sums(2);                                      // all walls
+  // the right wall alone: sum over its atoms
+  double local = 0.0, global = 0.0;
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    if (lmp->atom->type[i] == 2 && lmp->atom->x[i][0] > 0.1) local += lmp->atom->f[i][0];
+  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_NEAR(global / at_rest, 1.0, 0.05);    // measured 1.03 at 25 particles per H
+  // the floor carries the weight
+  const double weight = 1850 * 9.81 * 0.1 * 0.1;
+  EXPECT_NEAR(-right[1] / weight, 1.0, 0.02);
+  double vmax = 0.0;
+  for (const auto &entry : gather_state(lmp))
+    if (entry.second[0] == 1)
+      vmax = std::max(vmax, std::hypot(entry.second[4], entry.second[5]));
+  EXPECT_LT(vmax, 5.0e-3);
+}

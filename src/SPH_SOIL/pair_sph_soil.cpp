@@ -670,10 +670,16 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
       } else {
         for (int a = 0; a < DIMENSION; a++) partner.velocity[a] = beta * relative[a];
       }
+      // the image's stress: the soil particle's (no-slip, Bui 2008), or its mirror image
+      // (free-slip: no shear traction on the wall)
       const double *ss = ps + P_STRESS;
-      for (int m = 0; m < NSTRESS; m++) {
-        const int k = stress_components[m];
-        partner.stress_sum[k] = 2.0 * ss[k];
+      if (freeslip) {
+        SPHSoil::mirrored_stress_sum(ss, normal, partner.stress_sum);
+      } else {
+        for (int m = 0; m < NSTRESS; m++) {
+          const int k = stress_components[m];
+          partner.stress_sum[k] = 2.0 * ss[k];
+        }
       }
       const double rhos = ps[P_RHO];
       partner.mean_density = rhos;

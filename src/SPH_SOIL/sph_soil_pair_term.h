@@ -87,6 +87,27 @@ inline void pair_velocity_gradient(const PairPartner &p, double t[3][3])
     for (int b = 0; b < DIMENSION; b++) t[a][b] = -p.velocity[a] * p.grad[b];
 }
 
+// sigma + R sigma R with R = I - 2 n n^T, the mirror in the plane of unit normal n: the
+// stress sum of a soil particle and its image behind a smooth (free-slip) wall. The mirror
+// keeps the normal stresses and flips the shear between the normal and the wall's plane, so
+// that the wall carries no shear traction, as the mirrored velocity v - 2 (v.n) n has no
+// tangential slip relative to the soil. Voigt order xx yy zz xy xz yz.
+inline void mirrored_stress_sum(const double stress[6], const double n[3], double sum[6])
+{
+  static const int row[6] = {0, 1, 2, 0, 0, 1}, col[6] = {0, 1, 2, 1, 2, 2};
+  static const int voigt[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+  double sn[3];    // sigma n
+  for (int a = 0; a < 3; a++)
+    sn[a] = stress[voigt[a][0]] * n[0] + stress[voigt[a][1]] * n[1] + stress[voigt[a][2]] * n[2];
+  const double nsn = n[0] * sn[0] + n[1] * sn[1] + n[2] * sn[2];
+  for (int k = 0; k < 6; k++) {
+    const int a = row[k], b = col[k];
+    const double mirrored =
+        stress[k] - 2.0 * (n[a] * sn[b] + sn[a] * n[b]) + 4.0 * n[a] * n[b] * nsn;
+    sum[k] = stress[k] + mirrored;
+  }
+}
+
 }    // namespace SPHSoil
 
 #endif

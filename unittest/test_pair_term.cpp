@@ -1,0 +1,41 @@
+// The pair term's pieces that are not covered by the LAMMPS-level tests: the mirrored stress of
+// a free-slip wall image.
+#include "sph_soil_pair_term.h"
+
+#include "gtest/gtest.h"
+
+#include <cmath>
+
+using namespace SPHSoil;
+
+// A wall along x (normal y): the image keeps the normal stresses and flips the shear stresses
+// that couple y with x and z, so the sum has no shear traction on the wall: (sum n) x n = 0.
+TEST(PairTerm, MirroredStressOfAFreeSlipWallHasNoShearTraction)
+{
+  const double stress[6] = {-3.0, -5.0, -4.0, 1.5, 0.7, -0.9};
+  const double ny[3] = {0.0, 1.0, 0.0};
+  double sum[6];
+  mirrored_stress_sum(stress, ny, sum);
+  const double expected[6] = {-6.0, -10.0, -8.0, 0.0, 1.4, 0.0};
+  for (int k = 0; k < 6; k++) EXPECT_NEAR(sum[k], expected[k], 1e-15) << k;
+
+  // any normal: the traction of the sum is normal to the wall, and twice the soil's normal stress
+  const double angle = 0.3;
+  const double n[3] = {std::cos(angle) * std::sin(1.1), std::sin(angle) * std::sin(1.1), std::cos(1.1)};
+  mirrored_stress_sum(stress, n, sum);
+  static const int voigt[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+  double traction[3], soil_traction[3];
+  for (int a = 0; a < 3; a++) {
+    traction[a] = soil_traction[a] = 0.0;
+    for (int b = 0; b < 3; b++) {
+      traction[a] += sum[voigt[a][b]] * n[b];
+      soil_traction[a] += stress[voigt[a][b]] * n[b];
+    }
+  }
+  const double normal = traction[0] * n[0] + traction[1] * n[1] + traction[2] * n[2];
+  const double soil_normal = soil_traction[0] * n[0] + soil_traction[1] * n[1] + soil_traction[2] * n[2];
+  for (int a = 0; a < 3; a++) EXPECT_NEAR(traction[a], normal * n[a], 1e-14) << a;
+  EXPECT_NEAR(normal, 2.0 * soil_normal, 1e-14);
+  // and the trace is kept: the mirror is a rotation-like congruence
+  EXPECT_NEAR(sum[0] + sum[1] + sum[2], 2.0 * (stress[0] + stress[1] + stress[2]), 1e-14);
+}
