@@ -140,30 +140,8 @@ TEST_F(Walls, SoilAndWallForcesObeyNewtonsThirdLaw)
 TEST_F(Walls, AtRestColumnBetweenFreeSlipWallsStaysAtRest)
 {
   HIDE_OUTPUT([&] {
-    command("dimension 2");
-    command("boundary f f p");
-    command("atom_style sph/soil");
-    command("atom_modify map array");
-    command("lattice sq 0.004 origin 0.5 0.5 0");
-    command("region box block -0.02 0.12 -0.02 0.14 -0.001 0.001 units box");
-    command("create_box 2 box");
-    command("region soil block 0 0.1 0 0.1 INF INF units box");
-    command("region floor block -0.012 0.112 -0.012 0 INF INF units box");
-    command("region left block -0.012 0 0 0.12 INF INF units box");
-    command("region right block 0.1 0.112 0 0.12 INF INF units box");
-    command("create_atoms 1 region soil");
-    command("create_atoms 2 region floor");
-    command("create_atoms 2 region left");
-    command("create_atoms 2 region right");
-    command("group soil type 1");
-    command("group floor region floor");
-    command("group left region left");
-    command("group right region right");
-    command("sph_soil/set all mass $(1850*0.004*0.004) h 0.0048 density 1850");
+    for (const auto &line : walled_column_commands()) command(line);
     command("sph_soil/set soil geostatic 0.1 1850 9.81 0.5");
-    command("sph_soil/set floor wall 0 0 0 0 1 0");
-    command("sph_soil/set left wall 0 0 0 1 0 0");
-    command("sph_soil/set right wall 0.1 0 0 -1 0 0");
     command("pair_style sph/soil alpha 1 beta 1 wall freeslip");
     command("pair_coeff 1 1 soil 1850 1.5e6 0.3 30 0 0");
     command("pair_coeff 2 2 wall");

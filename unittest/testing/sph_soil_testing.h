@@ -49,6 +49,27 @@ inline const std::vector<std::string> &periodic_patch_commands()
   return commands;
 }
 
+// A 0.1 m x 0.1 m 2D column of soil particles (type 1, 4 mm spacing, h 4.8 mm, rho 1850) in a
+// box of wall particles (type 2: groups floor, left, right, with their planes), no pair style
+inline const std::vector<std::string> &walled_column_commands()
+{
+  static const std::vector<std::string> commands = {
+      "dimension 2", "boundary f f p", "atom_style sph/soil", "atom_modify map array",
+      "lattice sq 0.004 origin 0.5 0.5 0",
+      "region box block -0.02 0.12 -0.02 0.14 -0.001 0.001 units box", "create_box 2 box",
+      "region soil block 0 0.1 0 0.1 INF INF units box",
+      "region floor block -0.012 0.112 -0.012 0 INF INF units box",
+      "region left block -0.012 0 0 0.12 INF INF units box",
+      "region right block 0.1 0.112 0 0.12 INF INF units box",
+      "create_atoms 1 region soil", "create_atoms 2 region floor", "create_atoms 2 region left",
+      "create_atoms 2 region right", "group soil type 1", "group floor region floor",
+      "group left region left", "group right region right",
+      "sph_soil/set all mass $(1850*0.004*0.004) h 0.0048 density 1850",
+      "sph_soil/set floor wall 0 0 0 0 1 0", "sph_soil/set left wall 0 0 0 1 0 0",
+      "sph_soil/set right wall 0.1 0 0 -1 0 0"};
+  return commands;
+}
+
 inline int nprocs()
 {
   int n;
