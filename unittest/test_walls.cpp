@@ -152,7 +152,7 @@ TEST_F(Walls, AtRestColumnBetweenFreeSlipWallsStaysAtRest)
     command("run 5000 post no");
   });
   const double at_rest = 0.5 * 0.5 * 1850 * 9.81 * 0.1 * 0.1;    // 0.5 K0 gamma H^2
-  auto right = force_sums(2);                                      // all walls
+  auto walls = force_sums(2);
   // the right wall alone: sum over its atoms
   double local = 0.0, global = 0.0;
   for (int i = 0; i < lmp->atom->nlocal; i++)
@@ -161,7 +161,7 @@ TEST_F(Walls, AtRestColumnBetweenFreeSlipWallsStaysAtRest)
   EXPECT_NEAR(global / at_rest, 1.0, 0.05);    // measured 1.03 at 25 particles per H
   // the floor carries the weight
   const double weight = 1850 * 9.81 * 0.1 * 0.1;
-  EXPECT_NEAR(-right[1] / weight, 1.0, 0.02);
+  EXPECT_NEAR(-walls[1] / weight, 1.0, 0.02);
   double vmax = 0.0;
   for (const auto &entry : gather_state(lmp))
     if (entry.second[0] == 1)

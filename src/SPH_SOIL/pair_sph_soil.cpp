@@ -514,6 +514,9 @@ template <int DIMENSION> void PairSPHSoil::unpack_sums()
 template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
 {
   using SPHSoil::PairPartner;
+  using SPHSoil::pair_density_rate;
+  using SPHSoil::pair_force;
+  using SPHSoil::pair_velocity_gradient;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
@@ -600,9 +603,6 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
           Kernel::template gradient_factor_from_inverse<DIMENSION>(r, inv_h, hij * r * inv_r2);
       const double c_ij = c_type[itype][jtype];
 
-      using SPHSoil::pair_density_rate;
-      using SPHSoil::pair_force;
-      using SPHSoil::pair_velocity_gradient;
       PairPartner partner;
       double approach, force[3], t[3][3];
 

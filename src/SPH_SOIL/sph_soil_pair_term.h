@@ -2,9 +2,10 @@
    SPH_SOIL package: what a soil particle and its partner exchange (pure, inline).
 
    The partner is another soil particle or the image of a wall particle
-   (Bui 2008: it moves so that the relative velocity is beta v_s, and has the
-   soil particle's stress and density); pair_style sph/soil builds the
-   partner and applies the term, the functions here compute it
+   (Bui 2008: relative velocity beta (v_s - v_w), the soil particle's density,
+   and its stress, mirrored in the wall's plane behind a free-slip wall);
+   pair_style sph/soil builds the partner and applies the term (a wall
+   particle takes the opposite force), the functions here compute it
    (doc/theory.rst section 2):
      density rate     m_b (v_a - v_b) . grad W_ab
      acceleration     m_b (sigma_a/rho_a^2 + sigma_b/rho_b^2 - Pi_ab) grad W_ab
