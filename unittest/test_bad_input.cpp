@@ -190,8 +190,11 @@ std::vector<BadInput> cases()
         "material of type(s) 1: drucker_prager cohesion c = -1 must be finite and >= 0");
   error("CoeffInfinite", "patch", {}, "pair_coeff 1 1 soil 2650 1e400 0.3 19.8 0 0",
         "material of type(s) 1: drucker_prager parameter K: '1e400' is not a finite number");
-  error("CoeffWallWithParameters", "patch", {}, "pair_coeff 2 2 wall 3",
-        "material of type(s) 2: 'wall' takes no parameters, got 1");
+  error("CoeffWallUnknownOption", "patch", {}, "pair_coeff 2 2 wall 3",
+        "material of type(s) 2: unknown wall option '3' (allowed: noslip, freeslip, friction <mu>, "
+        "boundary mirror|extrapolate)");
+  error("CoeffWallFriction", "patch", {}, "pair_coeff 2 2 wall friction -1",
+        "material of type(s) 2: wall friction coefficient mu = -1 must be finite and >= 0");
   error("CoeffUnknownKind", "patch", {}, "pair_coeff 1 1 clay 2650 0.7e6 0.3 19.8 0 0",
         "Incorrect args for pair_coeff sph/soil: unknown material kind 'clay' for types 1 1 "
         "(allowed: soil, wall; a material file takes '* * file name1 ... name2')");

@@ -53,6 +53,28 @@ TEST(MaterialFile, ParsesSoilAndWallEntriesWithComments)
   EXPECT_NEAR(list[0].wave_speed(), 20.66, 0.01);
 }
 
+// a wall's slip and boundary words, in any order; without them, the pair style's slip
+TEST(MaterialFile, WallOptions)
+{
+  std::vector<SoilMaterial> list;
+  std::string error;
+  ASSERT_TRUE(parse_material_file("plain wall\n"
+                                  "smooth wall freeslip\n"
+                                  "rough wall friction 0.35 boundary mirror\n"
+                                  "box wall boundary extrapolate noslip\n",
+                                  list, error))
+      << error;
+  ASSERT_EQ(list.size(), 4u);
+  EXPECT_TRUE(list[0].slip == WallSlip::pair_default);
+  EXPECT_TRUE(list[0].boundary == WallBoundary::mirror);
+  EXPECT_TRUE(list[1].slip == WallSlip::freeslip);
+  EXPECT_TRUE(list[2].slip == WallSlip::friction);
+  EXPECT_EQ(list[2].friction, 0.35);
+  EXPECT_TRUE(list[3].slip == WallSlip::noslip);
+  EXPECT_TRUE(list[3].boundary == WallBoundary::extrapolate);
+  for (const auto &wall : list) EXPECT_TRUE(wall.is_wall());
+}
+
 // a line written before models had keywords (seven words) reads as Drucker-Prager, default fit
 TEST(MaterialFile, LineWithoutModelWordIsDruckerPrager)
 {
@@ -98,5 +120,15 @@ TEST(MaterialFile, RejectsBadEntriesNamingLineModelAndParameter)
   rejects("a soil\n", "line 1: material a: 'soil' needs rho0 and a model with its parameters");
   rejects("a rock 1 2 3\n", "line 1: material a: unknown kind 'rock' (allowed: soil, wall)");
   rejects("w wall\nw wall\n", "line 2: material w is defined twice");
+  rejects("w wall sticky\n", "line 1: material w: unknown wall option 'sticky' (allowed: noslip, "
+                             "freeslip, friction <mu>, boundary mirror|extrapolate)");
+  rejects("w wall friction\n", "line 1: material w: wall friction needs a coefficient mu >= 0");
+  rejects("w wall friction -0.1\n",
+          "line 1: material w: wall friction coefficient mu = -0.1 must be finite and >= 0");
+  rejects("w wall noslip freeslip\n", "line 1: material w: wall slip given twice ('freeslip')");
+  rejects("w wall boundary\n",
+          "line 1: material w: wall boundary needs a value (mirror or extrapolate)");
+  rejects("w wall boundary curved\n",
+          "line 1: material w: wall boundary 'curved' (allowed: mirror, extrapolate)");
   rejects("# nothing\n", "no material defined");
 }

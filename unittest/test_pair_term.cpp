@@ -39,3 +39,29 @@ TEST(PairTerm, MirroredStressOfAFreeSlipWallHasNoShearTraction)
   // and the trace is kept: the mirror is a rotation-like congruence
   EXPECT_NEAR(sum[0] + sum[1] + sum[2], 2.0 * (stress[0] + stress[1] + stress[2]), 1e-14);
 }
+
+// Coulomb friction between the two: mu = 0 is the free-slip sum, a large mu the no-slip sum
+// 2 sigma; in between, the sum's shear traction is the share lambda = mu |sigma_nn| / |sigma_nt|
+// of the no-slip one, so the traction of the image stress never exceeds mu times its normal part.
+TEST(PairTerm, FrictionalStressSumLiesBetweenFreeSlipAndNoSlip)
+{
+  const double stress[6] = {-3.0, -5.0, -4.0, 1.5, 0.7, -0.9};
+  const double n[3] = {0.0, 1.0, 0.0};
+  double free_slip[6], sum[6];
+  mirrored_stress_sum(stress, n, free_slip);
+  EXPECT_EQ(frictional_stress_sum(stress, n, 0.0, sum), 0.0);
+  for (int k = 0; k < 6; k++) EXPECT_NEAR(sum[k], free_slip[k], 1e-15) << k;
+  EXPECT_EQ(frictional_stress_sum(stress, n, 10.0, sum), 1.0);
+  for (int k = 0; k < 6; k++) EXPECT_NEAR(sum[k], 2.0 * stress[k], 1e-15) << k;
+
+  // |sigma_nt| = |(1.5, -0.9)| = 1.749, sigma_nn = -5: mu = 0.2 lets through 1/1.749 of it
+  const double shear = std::hypot(1.5, 0.9), mu = 0.2;
+  const double share = frictional_stress_sum(stress, n, mu, sum);
+  EXPECT_NEAR(share, mu * 5.0 / shear, 1e-15);
+  EXPECT_NEAR(std::hypot(sum[3], sum[5]), mu * std::fabs(sum[1]), 1e-14);
+  EXPECT_NEAR(sum[4], 2.0 * stress[4], 1e-15);    // xz, in the wall's plane: untouched
+  // a soil pulling on the wall (sigma_nn > 0) transmits no shear
+  const double tension[6] = {1.0, 2.0, 1.0, 1.5, 0.0, 0.0};
+  EXPECT_EQ(frictional_stress_sum(tension, n, 0.5, sum), 0.0);
+  EXPECT_NEAR(sum[3], 0.0, 1e-15);
+}

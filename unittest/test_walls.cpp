@@ -168,3 +168,100 @@ TEST_F(Walls, AtRestColumnBetweenFreeSlipWallsStaysAtRest)
       vmax = std::max(vmax, std::hypot(entry.second[4], entry.second[5]));
   EXPECT_LT(vmax, 5.0e-3);
 }
+
+// Coulomb friction (pair_coeff 2 2 wall friction mu): a strong block of soil on a floor, under
+// gravity tilted by the slope angle theta, sticks for tan(theta) < mu (the floor then carries
+// the tilt's shear, tan(theta) times the weight) and slides for tan(theta) > mu; a smooth wall
+// lets it slide with g sin(theta), a no-slip wall holds it. (Sliding, the measured acceleration
+// is below a rigid block's g (sin(theta) - mu cos(theta)): the stick-slip of single particles
+// over the wall's particles adds friction; doc/theory.rst 4.4.)
+namespace {
+// mean x velocity of the soil (type 1) of all ranks
+double mean_soil_velocity_x(LAMMPS_NS::LAMMPS *lmp)
+{
+  double local[2] = {0.0, 0.0}, global[2];
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    if (lmp->atom->type[i] == 1) {
+      local[0] += lmp->atom->v[i][0];
+      local[1] += 1.0;
+    }
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  return global[0] / global[1];
+}
+}    // namespace
+
+TEST_F(Walls, BlockOnAFrictionalSlopeSticksBelowAndSlidesAboveTheFrictionAngle)
+{
+  const double g = 9.81, mu = 0.4, dt = 1.0e-5;
+  struct Case {
+    double tan_theta;
+    std::string slip;
+  };
+  // tan(theta) = 0.8 mu and 1.5 mu with friction; free slip and no slip at 1.5 mu
+  const std::string friction = "friction " + std::to_string(mu);
+  for (const Case &c : {Case{0.8 * mu, friction}, Case{1.5 * mu, friction},
+                        Case{1.5 * mu, "freeslip"}, Case{1.5 * mu, "noslip"}}) {
+    const double theta = std::atan(c.tan_theta);
+    std::vector<double> velocity;
+    std::vector<double> wall_force;
+    HIDE_OUTPUT([&] {
+      command("clear");
+      command("units si");
+      command("dimension 2");
+      command("boundary f f p");
+      command("atom_style sph/soil");
+      command("atom_modify map array");
+      command("lattice sq 0.002 origin 0.5 0.5 0");
+      command("region box block -0.01 0.2 -0.01 0.03 -0.001 0.001 units box");
+      command("create_box 2 box");
+      // a flat block, 40 x 4 particles
+      command("region soil block 0 0.08 0 0.008 INF INF units box");
+      command("region floor block -0.006 0.196 -0.006 0 INF INF units box");
+      command("create_atoms 1 region soil");
+      command("create_atoms 2 region floor");
+      command("group soil type 1");
+      command("group floor type 2");
+      command("sph_soil/set all mass $(2000*0.002*0.002) h 0.0024 density 2000");
+      // the normal stress of the block's weight, no shear: the tilt loads the contact
+      command(fmt::format("sph_soil/set soil geostatic 0.008 2000 {} 0.5", g * std::cos(theta)));
+      command("sph_soil/set floor wall 0 0 0 0 1 0");
+      command("pair_style sph/soil alpha 1 beta 1");
+      // elastic: a cohesion far above the block's stresses
+      command("pair_coeff 1 1 soil 2000 2e6 0.3 30 0 1e5");
+      command("pair_coeff 2 2 wall " + c.slip);
+      command(fmt::format("fix gravity soil gravity {} vector {} {} 0", g, std::sin(theta),
+                          -std::cos(theta)));
+      command("fix integrate soil sph/soil");
+      command("neighbor 0.0005 bin");
+      command("neigh_modify every 1 delay 0 check yes");
+      command(fmt::format("timestep {}", dt));
+      command("thermo 0");
+      for (int k = 0; k < 5; k++) {
+        command("run 2000 post no");
+        velocity.push_back(mean_soil_velocity_x(lmp));
+      }
+      const auto walls = force_sums(2);
+      wall_force = {walls[0], walls[1]};
+    });
+    const double smooth = g * std::sin(theta), rigid_sliding = g * (std::sin(theta) - mu * std::cos(theta));
+    // the mean acceleration over the last 0.08 s
+    const double acceleration = (velocity[4] - velocity[0]) / (8000 * dt);
+    std::cerr << c.slip << " tan(theta)/mu " << c.tan_theta / mu << ": acceleration "
+              << acceleration << " (rigid block sliding " << rigid_sliding << ", smooth " << smooth
+              << "), v(0.1 s) " << velocity[4] << ", wall force ratio "
+              << -wall_force[0] / wall_force[1] << "\n";
+    if (c.slip == "freeslip") {
+      EXPECT_NEAR(acceleration / smooth, 1.0, 1.0e-3);
+    } else if (c.slip == friction && c.tan_theta > mu) {
+      // sliding: faster and faster, but at most as fast as a rigid block
+      EXPECT_GT(velocity[4], velocity[2]);
+      EXPECT_GT(velocity[2], velocity[0]);
+      EXPECT_GT(acceleration, 0.1 * rigid_sliding);
+      EXPECT_LT(acceleration, 1.1 * rigid_sliding);
+    } else {
+      // sticking: at rest to 1e-6 m/s, the floor carries the tilt's shear
+      EXPECT_LT(std::fabs(velocity[4]), 1.0e-6) << c.slip << " tan " << c.tan_theta;
+      EXPECT_NEAR(-wall_force[0] / wall_force[1], c.tan_theta, 1.0e-3 * c.tan_theta);
+    }
+  }
+}

@@ -249,7 +249,21 @@ void PairSPHSoil::init_style()
 
   // every type has a material here (init_one stops otherwise): a plain flag for the pair loop
   type_is_wall.assign(atom->ntypes + 1, 0);
-  for (int t = 1; t <= atom->ntypes; t++) type_is_wall[t] = materials[t].is_wall() ? 1 : 0;
+  type_wall_slip.assign(atom->ntypes + 1, SLIP_NONE);
+  type_wall_friction.assign(atom->ntypes + 1, 0.0);
+  for (int t = 1; t <= atom->ntypes; t++) {
+    const SoilMaterial &m = materials[t];
+    if (!m.is_wall()) continue;
+    type_is_wall[t] = 1;
+    using SPHSoil::WallSlip;
+    const WallSlip slip = m.slip == WallSlip::pair_default
+        ? (free_slip ? WallSlip::freeslip : WallSlip::noslip)
+        : m.slip;
+    type_wall_slip[t] = slip == WallSlip::noslip ? SLIP_NONE
+        : slip == WallSlip::freeslip             ? SLIP_FREE
+                                                 : SLIP_FRICTION;
+    type_wall_friction[t] = m.friction;
+  }
   check_particles();
 
   // a half list: each pair once, shares to both particles (see eval())
@@ -525,7 +539,8 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
   // members as locals: the stores to the sums (double *) could otherwise alias the double
   // members, which the compiler would then reload for every pair
   const double alpha = viscosity_alpha, beta_viscosity = viscosity_beta;
-  const bool freeslip = free_slip;
+  const int *const wall_slip = type_wall_slip.data();
+  const double *const wall_friction = type_wall_friction.data();
   double *const *const c_type = sound_speed_ij;
   const int *const is_wall = type_is_wall.data();
 
@@ -661,32 +676,38 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
         ds += partner.dx[a] * normal[a];
       }
       const double beta = ds > 0.0 ? MIN(1.5, 1.0 + wall_distance[wall] / ds) : 1.5;
-      double relative[3];
-      for (int a = 0; a < DIMENSION; a++) relative[a] = ps[P_V + a] - pw[P_V + a];
-      if (freeslip) {
-        double vn = 0.0;
-        for (int a = 0; a < DIMENSION; a++) vn += relative[a] * normal[a];
-        for (int a = 0; a < DIMENSION; a++) partner.velocity[a] = beta * vn * normal[a];
-      } else {
-        for (int a = 0; a < DIMENSION; a++) partner.velocity[a] = beta * relative[a];
-      }
-      // the image's stress: the soil particle's (no-slip, Bui 2008), or its mirror image
-      // (free-slip: no shear traction on the wall)
+      // the image's velocity relative to s and its stress: no slip, the whole relative velocity
+      // and the soil particle's stress (Bui 2008); free slip, the normal part and the stress's
+      // mirror image (no shear traction); friction, the mirror image plus the share of the
+      // shear that Coulomb's law allows, and the whole velocity while the soil sticks
+      const int slip = wall_slip[type[wall]];
       const double *ss = ps + P_STRESS;
-      if (freeslip) {
-        SPHSoil::mirrored_stress_sum(ss, normal, partner.stress_sum);
-      } else {
+      double share = 1.0;    // of the tangential velocity and the shear
+      if (slip == SLIP_NONE) {
         for (int m = 0; m < NSTRESS; m++) {
           const int k = stress_components[m];
           partner.stress_sum[k] = 2.0 * ss[k];
         }
+      } else if (slip == SLIP_FREE) {
+        SPHSoil::mirrored_stress_sum(ss, normal, partner.stress_sum);
+        share = 0.0;
+      } else {
+        share = SPHSoil::frictional_stress_sum(ss, normal, wall_friction[type[wall]],
+                                               partner.stress_sum);
       }
+      double relative[3], vn = 0.0;
+      for (int a = 0; a < DIMENSION; a++) {
+        relative[a] = beta * (ps[P_V + a] - pw[P_V + a]);
+        vn += relative[a] * normal[a];
+      }
+      for (int a = 0; a < DIMENSION; a++)
+        partner.velocity[a] = share == 1.0 ? relative[a] : vn * normal[a];
       const double rhos = ps[P_RHO];
       partner.mean_density = rhos;
-      const double mw = pw[P_MASS];
       const double drho = pair_density_rate<DIMENSION>(partner, approach);
-      pair_force<DIMENSION>(partner, approach, r2, hij, c_ij, alpha, beta_viscosity, ps[P_MASS] * mw,
-                            force);
+      pair_force<DIMENSION>(partner, approach, r2, hij, c_ij, alpha, beta_viscosity,
+                            ps[P_MASS] * pw[P_MASS], force);
+      const double mw = pw[P_MASS];
       if (update_wall) {
         double *ow = out + (size_t) wall * SUMS;
         for (int a = 0; a < DIMENSION; a++) ow[S_FORCE + a] -= force[a];

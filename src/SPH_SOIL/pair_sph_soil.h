@@ -5,7 +5,8 @@
    the density rate (continuity), the acceleration (momentum with Monaghan
    artificial viscosity) and the velocity gradient split into strain rate
    and spin (Bui et al. 2008; doc/theory.rst section 2). Wall particles are
-   Morris-type ghosts with Bui's no-slip (or free-slip) treatment.
+   Morris-type ghosts with Bui's no-slip treatment, free slip or Coulomb
+   friction per wall type, and take the soil's reaction.
    The stress update lives in fix sph/soil. See doc/pair_sph_soil.rst.
 ------------------------------------------------------------------------- */
 
@@ -49,11 +50,14 @@ class PairSPHSoil : public Pair {
 
  protected:
   double viscosity_alpha, viscosity_beta;    // Monaghan artificial viscosity
-  bool free_slip;                            // walls: reverse only the normal velocity
+  bool free_slip;    // the slip of walls without their own (pair_style ... wall freeslip)
   SPHSoil::KernelKind kernel;                      // the pair loop is compiled once per kernel
   std::vector<SPHSoil::SoilMaterial> materials;    // per atom type, index 1..ntypes
   std::vector<int> type_set;                       // 1 once pair_coeff gave the type a material
-  std::vector<int> type_is_wall;                   // per type, for the pair loop
+  // per type, for the pair loop: 1 for walls; a wall's slip (SLIP_*) and friction coefficient
+  std::vector<int> type_is_wall, type_wall_slip;
+  std::vector<double> type_wall_friction;
+  enum { SLIP_NONE = 0, SLIP_FREE = 1, SLIP_FRICTION = 2 };
   double **sound_speed_ij;                         // mean P-wave speed of a type pair
   double max_h;                                    // largest smoothing length at init
   class AtomVecSPHSoil *avec;

@@ -11,6 +11,57 @@
 
 using namespace SPHSoil;
 
+// wall [noslip | freeslip | friction mu] [boundary mirror | extrapolate], in any order
+static bool wall_from_words(const std::string &name, const std::vector<std::string> &words,
+                            SoilMaterial &material, std::string &error)
+{
+  const std::string usage =
+      "(allowed: noslip, freeslip, friction <mu>, boundary mirror|extrapolate)";
+  bool slip_given = false, boundary_given = false;
+  for (size_t k = 1; k < words.size(); k++) {
+    const std::string &word = words[k];
+    if (word == "noslip" || word == "freeslip" || word == "friction") {
+      if (slip_given) {
+        error = "material " + name + ": wall slip given twice ('" + word + "')";
+        return false;
+      }
+      slip_given = true;
+      material.slip = word == "noslip" ? WallSlip::noslip
+          : word == "freeslip"         ? WallSlip::freeslip
+                                       : WallSlip::friction;
+      if (material.slip != WallSlip::friction) continue;
+      if (k + 1 >= words.size()) {
+        error = "material " + name + ": wall friction needs a coefficient mu >= 0";
+        return false;
+      }
+      const std::string &value = words[++k];
+      if (!parse_finite_number(value, material.friction) || material.friction < 0.0) {
+        error = "material " + name + ": wall friction coefficient mu = " + value +
+            " must be finite and >= 0";
+        return false;
+      }
+    } else if (word == "boundary") {
+      if (boundary_given || k + 1 >= words.size()) {
+        error = "material " + name + ": wall boundary " +
+            (boundary_given ? "given twice" : "needs a value (mirror or extrapolate)");
+        return false;
+      }
+      boundary_given = true;
+      const std::string &value = words[++k];
+      if (value == "mirror") material.boundary = WallBoundary::mirror;
+      else if (value == "extrapolate") material.boundary = WallBoundary::extrapolate;
+      else {
+        error = "material " + name + ": wall boundary '" + value + "' (allowed: mirror, extrapolate)";
+        return false;
+      }
+    } else {
+      error = "material " + name + ": unknown wall option '" + word + "' " + usage;
+      return false;
+    }
+  }
+  return true;
+}
+
 bool SPHSoil::material_from_words(const std::string &name, const std::vector<std::string> &words,
                                   SoilMaterial &material, std::string &error)
 {
@@ -21,13 +72,7 @@ bool SPHSoil::material_from_words(const std::string &name, const std::vector<std
         model_keywords() + ") or 'wall'";
     return false;
   }
-  if (words[0] == "wall") {
-    if (words.size() != 1) {
-      error = "material " + name + ": 'wall' takes no parameters, got " + std::to_string(words.size() - 1);
-      return false;
-    }
-    return true;
-  }
+  if (words[0] == "wall") return wall_from_words(name, words, material, error);
   if (words[0] != "soil") {
     error = "material " + name + ": unknown kind '" + words[0] + "' (allowed: soil, wall)";
     return false;

@@ -3,12 +3,13 @@
 
    A material is either soil (a reference density and a constitutive model
    with its parameters) or wall (boundary particles, which borrow the state
-   of the soil particle they interact with). Material files list one
-   material per line (see potentials/README.md):
+   of the soil particle they interact with, with a slip condition and a
+   boundary treatment). Material files list one material per line (see
+   potentials/README.md):
 
      name  soil  rho0  model  parameters...     (model: see soil_models.h)
      name  soil  rho0  K nu phi psi c           (no model word: drucker_prager)
-     name  wall
+     name  wall  [noslip | freeslip | friction mu]  [boundary mirror | extrapolate]
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SOIL_MATERIAL_H
@@ -22,10 +23,21 @@
 
 namespace SPHSoil {
 
+// how a wall holds the soil along its surface: as pair_style sph/soil's 'wall' keyword says
+// (default), no slip, no shear traction, or Coulomb friction in between (doc/theory.rst 4.4)
+enum class WallSlip { pair_default, noslip, freeslip, friction };
+// how the wall particle stands in for the soil: the soil particle's image in the wall's plane
+// (Morris 1997 / Bui 2008: a plane per particle), or the soil's stress and velocity
+// extrapolated to the wall particle (Adami 2012: any shape, no plane)
+enum class WallBoundary { mirror, extrapolate };
+
 struct SoilMaterial {
   std::string name;
   double density = 0.0;                               // reference density rho_0 (kg/m^3)
   std::shared_ptr<const ConstitutiveModel> model;     // nullptr for a wall
+  WallSlip slip = WallSlip::pair_default;             // walls only
+  double friction = 0.0;                              // Coulomb coefficient, WallSlip::friction
+  WallBoundary boundary = WallBoundary::mirror;       // walls only
 
   bool is_wall() const { return !model; }
   // elastic P-wave speed sqrt((K + 4G/3)/rho_0) of a soil: bounds the time step, scales the
@@ -33,7 +45,7 @@ struct SoilMaterial {
   double wave_speed() const { return model ? model->wave_speed(density) : 0.0; }
 };
 
-// Build a material from words: {"soil", rho0, [model,] parameters...} or {"wall"}.
+// Build a material from words: {"soil", rho0, [model,] parameters...} or {"wall", options...}.
 // On failure returns false and says why in `error`.
 bool material_from_words(const std::string &name, const std::vector<std::string> &words,
                          SoilMaterial &material, std::string &error);

@@ -20,6 +20,8 @@
 #ifndef LMP_SPH_SOIL_PAIR_TERM_H
 #define LMP_SPH_SOIL_PAIR_TERM_H
 
+#include <cmath>
+
 namespace SPHSoil {
 
 // the pair's inputs, as seen from soil particle a
@@ -88,12 +90,12 @@ inline void pair_velocity_gradient(const PairPartner &p, double t[3][3])
     for (int b = 0; b < DIMENSION; b++) t[a][b] = -p.velocity[a] * p.grad[b];
 }
 
-// sigma + R sigma R with R = I - 2 n n^T, the mirror in the plane of unit normal n: the
-// stress sum of a soil particle and its image behind a smooth (free-slip) wall. The mirror
-// keeps the normal stresses and flips the shear between the normal and the wall's plane, so
-// that the wall carries no shear traction, as the mirrored velocity v - 2 (v.n) n has no
-// tangential slip relative to the soil. Voigt order xx yy zz xy xz yz.
-inline void mirrored_stress_sum(const double stress[6], const double n[3], double sum[6])
+// R sigma R with R = I - 2 n n^T, the mirror image of a stress in the plane of unit normal n:
+// it keeps the normal stresses and flips the shear between the normal and the plane. Also
+// returns the traction's normal part n.sigma.n and its shear part |sigma n - (n.sigma.n) n|.
+// Voigt order xx yy zz xy xz yz.
+inline void mirror_stress(const double stress[6], const double n[3], double mirrored[6],
+                          double &normal_traction, double &shear_traction)
 {
   static const int row[6] = {0, 1, 2, 0, 0, 1}, col[6] = {0, 1, 2, 1, 2, 2};
   static const int voigt[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
@@ -103,10 +105,41 @@ inline void mirrored_stress_sum(const double stress[6], const double n[3], doubl
   const double nsn = n[0] * sn[0] + n[1] * sn[1] + n[2] * sn[2];
   for (int k = 0; k < 6; k++) {
     const int a = row[k], b = col[k];
-    const double mirrored =
-        stress[k] - 2.0 * (n[a] * sn[b] + sn[a] * n[b]) + 4.0 * n[a] * n[b] * nsn;
-    sum[k] = stress[k] + mirrored;
+    mirrored[k] = stress[k] - 2.0 * (n[a] * sn[b] + sn[a] * n[b]) + 4.0 * n[a] * n[b] * nsn;
   }
+  double shear2 = 0.0;
+  for (int a = 0; a < 3; a++) shear2 += (sn[a] - nsn * n[a]) * (sn[a] - nsn * n[a]);
+  normal_traction = nsn;
+  shear_traction = std::sqrt(shear2);
+}
+
+// sigma + R sigma R: the stress sum of a soil particle and its image behind a smooth
+// (free-slip) wall. The wall carries no shear traction, as the mirrored velocity
+// v - 2 (v.n) n has no tangential slip relative to the soil.
+inline void mirrored_stress_sum(const double stress[6], const double n[3], double sum[6])
+{
+  double mirrored[6], normal_traction, shear_traction;
+  mirror_stress(stress, n, mirrored, normal_traction, shear_traction);
+  for (int k = 0; k < 6; k++) sum[k] = stress[k] + mirrored[k];
+}
+
+// Coulomb friction on a wall, between free slip and no slip (doc/theory.rst 4.4): the image's
+// stress is the mirror image plus the share lambda of the soil particle's shear,
+//   sum = sigma + R sigma R + lambda (sigma - R sigma R),
+// lambda = min(1, mu (-sigma_nn) / |sigma_nt|), 0 when the soil pulls on the wall
+// (sigma_nn >= 0); so the traction the wall transmits, lambda |sigma_nt|, never exceeds
+// mu (-sigma_nn). lambda = 1 (the soil sticks) is the no-slip image's 2 sigma, mu = 0 the
+// free-slip image. Returns lambda. (sigma may be scaled, e.g. sigma / rho^2: lambda is not.)
+inline double frictional_stress_sum(const double stress[6], const double n[3], double mu,
+                                    double sum[6])
+{
+  double mirrored[6], normal_traction, shear_traction;
+  mirror_stress(stress, n, mirrored, normal_traction, shear_traction);
+  const double limit = normal_traction < 0.0 ? -mu * normal_traction : 0.0;
+  const double share = shear_traction <= limit ? 1.0 : limit / shear_traction;
+  for (int k = 0; k < 6; k++)
+    sum[k] = stress[k] + mirrored[k] + share * (stress[k] - mirrored[k]);
+  return share;
 }
 
 }    // namespace SPHSoil
