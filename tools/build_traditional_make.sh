@@ -14,7 +14,7 @@
 #
 # What it does in <tree>/src, i.e. the recipe of README.md:
 #   cp -r SPH_SOIL <tree>/src/
-#   make yes-sph_soil [yes-graphics]            # GRAPHICS holds dump image after 4Feb2025
+#   make yes-sph_soil yes-rigid [yes-graphics]            # GRAPHICS holds dump image after 4Feb2025
 #   make mpi LMP_INC="... -DLAMMPS_PNG -DLAMMPS_JPEG" JPG_LIB="-lpng -ljpeg"
 # The compiler runs through ccache when it is installed (CC="ccache mpicxx").
 set -euo pipefail
@@ -46,7 +46,7 @@ fi
 cd "$tree/src"
 rm -rf SPH_SOIL
 cp -r "$root/src/SPH_SOIL" .
-packages=(sph_soil)
+packages=(sph_soil rigid)
 [ -d GRAPHICS ] && packages+=(graphics)
 for p in "${packages[@]}"; do make "yes-$p" > /dev/null; done
 # a second run updates the copies of changed package files

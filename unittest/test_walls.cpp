@@ -17,7 +17,7 @@ class Walls : public LAMMPSTest {
   void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
 
   // a 2D block of soil (20 x 10 particles) on a floor against a left wall
-  void soil_in_a_corner(const std::string &newton = "on")
+  void soil_in_a_corner(const std::string &newton = "on", const std::string &wall = "wall")
   {
     HIDE_OUTPUT([&] {
       command("newton " + newton);
@@ -43,7 +43,7 @@ class Walls : public LAMMPSTest {
       command("sph_soil/set left wall 0 0 0 1 0 0");
       command("pair_style sph/soil alpha 1 beta 1");
       command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
-      command("pair_coeff 2 2 wall");
+      command("pair_coeff 2 2 " + wall);
       command("fix integrate soil sph/soil");
       command("neighbor 0.0005 bin");
       command("neigh_modify every 1 delay 0 check yes");
@@ -110,26 +110,29 @@ TEST_F(Walls, RigidTranslationWithMovingWallsLeavesTheSoilUnstrained)
 // share is the soil's force on them, with and without newton_pair.
 TEST_F(Walls, SoilAndWallForcesObeyNewtonsThirdLaw)
 {
-  for (const std::string newton : {"on", "off"}) {
-    if (newton == "off") HIDE_OUTPUT([&] { command("clear"); command("units si"); });
-    soil_in_a_corner(newton);
-    HIDE_OUTPUT([&] {
-      command("variable vx atom 0.05*sin(2*PI*y/0.02)");
-      command("velocity soil set v_vx -0.02 0 units box");
-      command("sph_soil/set soil stress -1000 -1500 -1000 100 0 0");
-      command("run 20 post no");
-    });
-    const auto all = force_sums(0), soil = force_sums(1), wall = force_sums(2);
-    const double scale = all[2] + all[3];
-    ASSERT_GT(scale, 0.0);
-    for (int a = 0; a < 2; a++) {
-      EXPECT_NEAR(all[a], 0.0, 1.0e-13 * scale) << "newton " << newton << " component " << a;
-      EXPECT_NEAR(wall[a], -soil[a], 1.0e-13 * scale) << "newton " << newton << " component " << a;
+  bool first = true;
+  for (const std::string wall : {"wall", "wall boundary extrapolate"})
+    for (const std::string newton : {"on", "off"}) {
+      if (!first) HIDE_OUTPUT([&] { command("clear"); command("units si"); });
+      first = false;
+      soil_in_a_corner(newton, wall);
+      HIDE_OUTPUT([&] {
+        command("variable vx atom 0.05*sin(2*PI*y/0.02)");
+        command("velocity soil set v_vx -0.02 0 units box");
+        command("sph_soil/set soil stress -1000 -1500 -1000 100 0 0");
+        command("run 20 post no");
+      });
+      const auto all = force_sums(0), soil = force_sums(1), walls = force_sums(2);
+      const double scale = all[2] + all[3];
+      ASSERT_GT(scale, 0.0);
+      for (int a = 0; a < 2; a++) {
+        EXPECT_NEAR(all[a], 0.0, 1.0e-13 * scale) << wall << ", newton " << newton << " component " << a;
+        EXPECT_NEAR(walls[a], -soil[a], 1.0e-13 * scale) << wall << ", newton " << newton << " component " << a;
+      }
+      // the soil pushes the floor down and the left wall to the left
+      EXPECT_LT(walls[1], -0.01 * scale) << wall << ", newton " << newton;
+      EXPECT_LT(walls[0], -0.001 * scale) << wall << ", newton " << newton;
     }
-    // the soil pushes the floor down and the left wall to the left
-    EXPECT_LT(wall[1], -0.01 * scale) << "newton " << newton;
-    EXPECT_LT(wall[0], -0.001 * scale) << "newton " << newton;
-  }
 }
 
 // A column of soil in its at-rest state between smooth (free-slip) walls stays at rest: the
@@ -246,7 +249,8 @@ TEST_F(Walls, BlockOnAFrictionalSlopeSticksBelowAndSlidesAboveTheFrictionAngle)
     const double smooth = g * std::sin(theta), rigid_sliding = g * (std::sin(theta) - mu * std::cos(theta));
     // the mean acceleration over the last 0.08 s
     const double acceleration = (velocity[4] - velocity[0]) / (8000 * dt);
-    std::cerr << c.slip << " tan(theta)/mu " << c.tan_theta / mu << ": acceleration "
+    if (rank() == 0)
+      std::cerr << c.slip << " tan(theta)/mu " << c.tan_theta / mu << ": acceleration "
               << acceleration << " (rigid block sliding " << rigid_sliding << ", smooth " << smooth
               << "), v(0.1 s) " << velocity[4] << ", wall force ratio "
               << -wall_force[0] / wall_force[1] << "\n";
@@ -264,4 +268,124 @@ TEST_F(Walls, BlockOnAFrictionalSlopeSticksBelowAndSlidesAboveTheFrictionAngle)
       EXPECT_NEAR(-wall_force[0] / wall_force[1], c.tan_theta, 1.0e-3 * c.tan_theta);
     }
   }
+}
+
+// Wall normals turn with the wall: a wall particle's normal is its dipole orientation mu, which
+// the fixes that rotate atoms with their orientation turn with them. A plate of wall particles
+// (normal +y) next to a block of soil turns about the z axis, by fix move rotate (update
+// dipole) and as a free rigid body (fix rigid); its normals stay the analytic ones to 1e-12.
+class TurningWalls : public Walls {
+ protected:
+  // a 20 x 4 plate of wall particles centred at the origin, its upper face y = 0.003 facing +y,
+  // and a block of soil above it, clear of the plate's sweep
+  void plate_and_soil()
+  {
+    command("dimension 2");
+    command("boundary f f p");
+    command("atom_style sph/soil");
+    command("atom_modify map array");
+    command("lattice sq 0.002 origin 0.5 0.5 0");
+    command("region box block -0.04 0.04 -0.04 0.06 -0.001 0.001 units box");
+    command("create_box 2 box");
+    command("region plate block -0.02 0.02 -0.003 0.003 INF INF units box");
+    command("region soil block -0.01 0.01 0.03 0.04 INF INF units box");
+    command("create_atoms 2 region plate");
+    command("create_atoms 1 region soil");
+    command("group plate type 2");
+    command("group soil type 1");
+    command("sph_soil/set all mass $(2650*0.002*0.002) h 0.0024 density 2650");
+    command("sph_soil/set plate wall 0 0.003 0 0 1 0");
+    command("pair_style sph/soil");
+    command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
+    command("pair_coeff 2 2 wall");
+    command("fix integrate soil sph/soil");
+    command("neighbor 0.0005 bin");
+    command("neigh_modify every 1 delay 0 check yes");
+    command("comm_modify vel yes");
+    command("timestep 1.0e-5");
+    command("thermo 0");
+  }
+  // every wall particle's normal is (-sin(angle), cos(angle), 0)
+  void expect_normals_turned_by(double angle)
+  {
+    const auto state = gather_state(lmp);
+    const auto &names = state_names();
+    const int nx = std::find(names.begin(), names.end(), "wall_nx") - names.begin();
+    int walls = 0;
+    for (const auto &entry : state) {
+      if (entry.second[0] != 2) continue;
+      walls++;
+      EXPECT_NEAR(entry.second[nx], -std::sin(angle), 1.0e-12) << "atom " << entry.first;
+      EXPECT_NEAR(entry.second[nx + 1], std::cos(angle), 1.0e-12) << "atom " << entry.first;
+      EXPECT_EQ(entry.second[nx + 2], 0.0) << "atom " << entry.first;
+    }
+    EXPECT_EQ(walls, 80);    // 20 x 4: the rows at y = -0.003 and 0.003 included
+  }
+};
+
+TEST_F(TurningWalls, FixMoveRotateTurnsTheNormals)
+{
+  bool has_update_dipole = true;
+  HIDE_OUTPUT([&] {
+    plate_and_soil();
+    try {
+      command("fix turn plate move rotate 0 0 0 0 0 1 0.05 units box update dipole");
+    } catch (LAMMPS_NS::LAMMPSException &) {
+      has_update_dipole = false;
+    }
+  });
+  // LAMMPS of 2025 and later: fix move's 'update dipole'
+  if (!has_update_dipole) GTEST_SKIP() << "this LAMMPS's fix move has no 'update dipole'";
+  HIDE_OUTPUT([&] { command("run 1300 post no"); });
+  // 0.013 s of a 0.05 s period
+  expect_normals_turned_by(2.0 * M_PI * 0.013 / 0.05);
+}
+
+TEST_F(TurningWalls, FixRigidTurnsTheNormals)
+{
+  const double omega = 3.0;    // rad/s about z
+  HIDE_OUTPUT([&] {
+    plate_and_soil();
+    command(fmt::format("variable vx atom -{}*y", omega));
+    command(fmt::format("variable vy atom {}*x", omega));
+    command("velocity plate set v_vx v_vy 0 units box");
+    command("fix body plate rigid single");
+    command("run 5000 post no");
+  });
+  // the body's angle from its atoms: the direction of the plate's long axis, from the first to
+  // the last particle of its first row (create_atoms numbers them first, x fastest)
+  const auto state = gather_state(lmp);
+  const auto &first = state.at(1), &last = state.at(20);
+  const double angle = std::atan2(last[2] - first[2], last[1] - first[1]);
+  EXPECT_NEAR(angle, omega * 0.05, 0.02 * omega * 0.05);    // a free body turns at omega
+  expect_normals_turned_by(angle);
+}
+
+// Soil striking a free rigid body: the block of soil falls (no gravity, 1 m/s) onto the plate,
+// a free body under fix rigid, and pushes it away: the momentum of soil plus body is
+// conserved to round-off through the impact (the body takes the soil's reaction, Newton's
+// third law, and fix rigid integrates it), while the body gains a good part of it.
+TEST_F(TurningWalls, SoilAndAFreeRigidBodyConserveMomentum)
+{
+  auto momentum = [&](int type) {
+    double local[2] = {0.0, 0.0}, global[2];
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      if (type == 0 || lmp->atom->type[i] == type)
+        for (int a = 0; a < 2; a++) local[a] += lmp->atom->rmass[i] * lmp->atom->v[i][a];
+    MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return std::vector<double>{global[0], global[1]};
+  };
+  HIDE_OUTPUT([&] {
+    plate_and_soil();
+    command("velocity soil set 0.2 -1.0 0 units box");
+    command("fix body plate rigid single");
+    command("run 0 post no");
+  });
+  const auto before = momentum(0);
+  HIDE_OUTPUT([&] { command("run 4000 post no"); });
+  const auto after = momentum(0), body = momentum(2);
+  const double scale = std::hypot(before[0], before[1]);
+  for (int a = 0; a < 2; a++) EXPECT_NEAR(after[a], before[a], 1.0e-12 * scale) << "component " << a;
+  // the impact happened: the body moves down with a tenth or more of the momentum
+  EXPECT_LT(body[1], 0.1 * before[1]);
 }

@@ -28,7 +28,6 @@ const char *const STRAIN_NAME = "sph_soil_strain";
 const char *const STRAIN_RATE_NAME = "sph_soil_strain_rate";
 const char *const SPIN_NAME = "sph_soil_spin";
 const char *const LEVEL_NAME = "sph_soil_level";
-const char *const WALL_NORMAL_NAME = "sph_soil_wall_normal";
 const char *const WALL_DISTANCE_NAME = "sph_soil_wall_distance";
 
 // What compute property/atom can read: name, array, column (-1 for a vector).
@@ -90,6 +89,10 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   atom->rmass_flag = 1;
   atom->rho_flag = 1;
   atom->vest_flag = 1;
+  // a wall particle's normal is its dipole orientation mu (unit length, mu[3] = 1; 0 for soil):
+  // the fixes that turn orientations with their atoms (fix rigid, fix rigid/small, fix move
+  // rotate/transrot with 'update dipole') then turn the normal with the wall
+  atom->mu_flag = 1;
 
   // read_restart and a second atom_style command re-create the AtomVec: an entry of the
   // previous instance then follows the new arrays
@@ -101,11 +104,11 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   set_peratom(atom, STRAIN_RATE_NAME, &arrays->strain_rate, Atom::DOUBLE, NVOIGT);
   set_peratom(atom, SPIN_NAME, &arrays->spin, Atom::DOUBLE, NSPIN);
   set_peratom(atom, LEVEL_NAME, &arrays->level, Atom::INT, 0);
-  set_peratom(atom, WALL_NORMAL_NAME, &arrays->wall_normal, Atom::DOUBLE, 3);
   set_peratom(atom, WALL_DISTANCE_NAME, &arrays->wall_distance, Atom::DOUBLE, 0);
 
   // Which fields travel where (why):
-  //  comm (every step):  rho, stress, vest   - the pair sum needs them from ghosts
+  //  comm (every step):  rho, stress, vest   - the pair sum needs them from ghosts,
+  //                      and mu, the wall normal, which turns with a rotating wall
   //  reverse (every step): drho, strain rate, spin - ghosts' shares of the pair sums
   //  border:             + mass, h, wall data - constant between reneighborings
   //  exchange:           the whole state and the stress rate: atoms migrate between the
@@ -115,14 +118,14 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   //  restart:            the whole state (fix sph/soil writes the rates)
   //  data file:          the whole state, see doc/atom_style_sph_soil.rst
   const std::vector<std::string> rates = {"drho", STRESS_RATE_NAME, STRAIN_RATE_NAME, SPIN_NAME};
-  const std::vector<std::string> state = {"rmass",     "rho",      H_NAME,          "vest",
-                                          STRESS_NAME, STRAIN_NAME, LEVEL_NAME,      WALL_NORMAL_NAME,
+  const std::vector<std::string> state = {"rmass",     "rho",       H_NAME,     "vest",
+                                          STRESS_NAME, STRAIN_NAME, LEVEL_NAME, "mu",
                                           WALL_DISTANCE_NAME};
   std::vector<std::string> all = state;
   all.insert(all.end(), rates.begin(), rates.end());
-  const std::vector<std::string> comm = {"rho", STRESS_NAME, "vest"};
-  const std::vector<std::string> border = {"rmass",  "rho",           STRESS_NAME,       "vest",
-                                           H_NAME,   WALL_NORMAL_NAME, WALL_DISTANCE_NAME};
+  const std::vector<std::string> comm = {"rho", STRESS_NAME, "vest", "mu"};
+  const std::vector<std::string> border = {"rmass", "rho", STRESS_NAME,       "vest",
+                                           H_NAME,  "mu",  WALL_DISTANCE_NAME};
 
   using SphSoilCompat::assign_fields;
   assign_fields(fields_grow, all, field_storage[0]);
@@ -172,7 +175,7 @@ void AtomVecSPHSoil::grow_pointers()
   strain_rate = arrays->strain_rate;
   spin = arrays->spin;
   level = arrays->level;
-  wall_normal = arrays->wall_normal;
+  wall_normal = atom->mu;
   wall_distance = arrays->wall_distance;
   rmass = atom->rmass;
   rho = atom->rho;
@@ -225,7 +228,8 @@ void AtomVecSPHSoil::data_atom_post(int ilocal)
                "Invalid refinement level {} of atom {} in Atoms section of data file: must be in 0 "
                "to {}", level[ilocal], id, SPHSoil::MAX_LEVEL);
   drho[ilocal] = 0.0;
-  for (int k = 0; k < 3; k++) vest[ilocal][k] = wall_normal[ilocal][k] = 0.0;
+  for (int k = 0; k < 3; k++) vest[ilocal][k] = 0.0;
+  for (int k = 0; k < 4; k++) wall_normal[ilocal][k] = 0.0;
   wall_distance[ilocal] = 0.0;
   for (int k = 0; k < NVOIGT; k++)
     stress[ilocal][k] = stress_rate[ilocal][k] = total_strain[ilocal][k] = strain_rate[ilocal][k] = 0.0;

@@ -46,7 +46,8 @@ class AtomVecSPHSoil : public AtomVec {
   double **strain_rate;        // symmetric part of the velocity gradient
   double **spin;               // antisymmetric part: xy, xz, yz
   int *level;                  // refinement level, 0 for an original particle
-  double **wall_normal;        // unit normal into the soil for wall particles, else 0
+  double **wall_normal;        // Atom's mu: unit normal into the soil (and 1) for wall
+                               // particles, else 0; see the constructor
   double *wall_distance;       // distance of a wall particle behind the wall surface
 
   struct Arrays {
@@ -54,7 +55,6 @@ class AtomVecSPHSoil : public AtomVec {
     double **stress = nullptr, **stress_rate = nullptr, **total_strain = nullptr;
     double **strain_rate = nullptr, **spin = nullptr;
     int *level = nullptr;
-    double **wall_normal = nullptr;
     double *wall_distance = nullptr;
   };
 

@@ -107,9 +107,11 @@ void FixSPHSoil::init()
   // one integrator per particle: two fixes sph/soil over the same particles would each
   // advance them, a step of 2 dt
   const int *mask = atom->mask;
+  passes_wall_velocities = true;
   for (int ifix = 0; ifix < modify->nfix; ifix++) {
     const Fix *other = modify->fix[ifix];
     if (other == this || strcmp(other->style, "sph/soil") != 0) continue;
+    if (ifix < modify->find_fix(id)) passes_wall_velocities = false;
     const int otherbit = other->groupbit;
     const auto twice = SphSoilOffenders::find_offenders(
         lmp, [&](int i) { return (mask[i] & groupbit) && (mask[i] & otherbit); },
@@ -134,7 +136,7 @@ void FixSPHSoil::init()
   for (int i = 0; i < nlocal; i++)
     if (integrated(i))
       for (int k = 0; k < 3; k++) atom->vest[i][k] = atom->v[i][k];
-  walls_velocity_to_estimate();
+  walls_velocity_to_estimate(true);
 
   if (cfl > 0.0) {
     const double dt = stable_timestep();
@@ -236,17 +238,23 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
 
 void FixSPHSoil::post_integrate()
 {
-  walls_velocity_to_estimate();
+  walls_velocity_to_estimate(false);
 }
 
-void FixSPHSoil::walls_velocity_to_estimate()
+// vest holds the wall's velocity of the step before: the difference is its acceleration
+void FixSPHSoil::walls_velocity_to_estimate(bool start)
 {
+  if (!passes_wall_velocities) return;
   double **v = atom->v, **vest = atom->vest;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
+  const double inv_dt = 1.0 / update->dt;
   for (int i = 0; i < nlocal; i++)
     if (wall_type[type[i]])
-      for (int k = 0; k < 3; k++) vest[i][k] = v[i][k];
+      for (int k = 0; k < 3; k++) {
+        integrator_state[i][WALL_ACCELERATION + k] = start ? 0.0 : (v[i][k] - vest[i][k]) * inv_dt;
+        vest[i][k] = v[i][k];
+      }
 }
 
 /* ----------------------------------------------------------------------

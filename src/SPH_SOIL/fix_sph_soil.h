@@ -44,6 +44,11 @@ class FixSPHSoil : public Fix {
   void post_run() override;
   double compute_vector(int) override;
 
+  // the acceleration of wall particle i (owned) over the last step, (v(t) - v(t - dt)) / dt,
+  // for walls that extrapolate the soil's stress (pair_style sph/soil: the inertia of a
+  // moving wall); 0 at the start of a run
+  const double *wall_acceleration(int i) const { return integrator_state[i] + WALL_ACCELERATION; }
+
   // after particles were split (smaller h): adapt the time step (cfl), or stop with an error
   // if the user's fixed step is now above the stability limit
   void particles_refined(const char *who);
@@ -70,7 +75,8 @@ class FixSPHSoil : public Fix {
   class PairSPHSoil *pair;
   std::vector<const SPHSoil::ConstitutiveModel *> model_of_type;    // owned by the pair style
   std::vector<int> wall_type;    // per type: 1 for the pair style's wall types
-  void walls_velocity_to_estimate();
+  bool passes_wall_velocities;   // the first fix sph/soil does it for all walls
+  void walls_velocity_to_estimate(bool start);
   bigint yielded_count;
 
   // The integrator's own per-atom state, one row per atom (the current rates live in the atom
@@ -82,7 +88,9 @@ class FixSPHSoil : public Fix {
   //    restarted or continued run is identical to an uninterrupted one. SAVED is 1 when they
   //    are there to be restored.
   // Atoms migrate between the predictor and the corrector: the row travels with them.
+  // A wall particle's row holds its acceleration (the first 3 values) and nothing else.
   enum {
+    WALL_ACCELERATION = 0,      // 3, wall particles only
     HEUN_DRHO = 0,
     HEUN_STRAIN_RATE = 1,       // 6
     SAVED = 7,                  // the saved block: flag, then NSAVED rates

@@ -9,8 +9,10 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_sph_soil.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "soil_kernels.h"
@@ -35,13 +37,17 @@ PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     kernel(SPHSoil::KernelKind::cubic),
     sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), warned_density(false),
     warned_spacing(false), warned_coinciding(false), nmax_packed(0),
-    packed(nullptr), sums(nullptr)
+    packed(nullptr), sums(nullptr), has_extrapolated_walls(false), nmax_extrapolation(0),
+    extrapolation_sums(nullptr), extrapolated_state(nullptr), integrator(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
   one_coeff = 0;
   manybody_flag = 0;
   no_virial_fdotr_compute = 1;
+  // extrapolated walls: their sums go back to the owners, their state out to the ghosts
+  comm_forward = WSTATE;
+  comm_reverse = XSUMS;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -50,6 +56,8 @@ PairSPHSoil::~PairSPHSoil()
 {
   memory->destroy(packed);
   memory->destroy(sums);
+  memory->destroy(extrapolation_sums);
+  memory->destroy(extrapolated_state);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -251,20 +259,38 @@ void PairSPHSoil::init_style()
   type_is_wall.assign(atom->ntypes + 1, 0);
   type_wall_slip.assign(atom->ntypes + 1, SLIP_NONE);
   type_wall_friction.assign(atom->ntypes + 1, 0.0);
+  has_extrapolated_walls = false;
   for (int t = 1; t <= atom->ntypes; t++) {
     const SoilMaterial &m = materials[t];
     if (!m.is_wall()) continue;
-    type_is_wall[t] = 1;
     using SPHSoil::WallSlip;
     const WallSlip slip = m.slip == WallSlip::pair_default
         ? (free_slip ? WallSlip::freeslip : WallSlip::noslip)
         : m.slip;
+    const bool extrapolated = m.boundary == SPHSoil::WallBoundary::extrapolate;
+    type_is_wall[t] = extrapolated ? WALL_EXTRAPOLATE : WALL_MIRROR;
+    has_extrapolated_walls = has_extrapolated_walls || extrapolated;
+    // free slip and friction act across a plane; an extrapolated wall has none
+    if (extrapolated && slip != WallSlip::noslip)
+      error->all(FLERR, "Pair sph/soil: wall type {} has boundary extrapolate with {}: an "
+                        "extrapolated wall is no-slip (free slip and friction need the plane of "
+                        "'boundary mirror')", t, slip == WallSlip::freeslip ? "freeslip" : "friction");
     type_wall_slip[t] = slip == WallSlip::noslip ? SLIP_NONE
         : slip == WallSlip::freeslip             ? SLIP_FREE
                                                  : SLIP_FRICTION;
     type_wall_friction[t] = m.friction;
   }
   check_particles();
+
+  // extrapolated walls: the soil's body force (fix gravity) and the walls' acceleration
+  gravity_fixes.clear();
+  integrator = nullptr;
+  for (int ifix = 0; ifix < modify->nfix; ifix++) {
+    Fix *fix = modify->fix[ifix];
+    if (strcmp(fix->style, "gravity") == 0) gravity_fixes.push_back(fix);
+    if (!integrator && strcmp(fix->style, "sph/soil") == 0)
+      integrator = dynamic_cast<FixSPHSoil *>(fix);
+  }
 
   // a half list: each pair once, shares to both particles (see eval())
   SphSoilCompat::request_half_neighbor_list(neighbor, this, instance_me);
@@ -292,7 +318,7 @@ void PairSPHSoil::check_particles()
   const auto no_plane = find_offenders(
       lmp,
       [&](int i) {
-        return type_set[type[i]] && type_is_wall[type[i]] &&
+        return type_set[type[i]] && type_is_wall[type[i]] == WALL_MIRROR &&
             normal[i][0] * normal[i][0] + normal[i][1] * normal[i][1] + normal[i][2] * normal[i][2] == 0.0;
       },
       position);
@@ -304,7 +330,9 @@ void PairSPHSoil::check_particles()
   // behind the plane: distance >= 0 (a round-off margin for particles on the plane)
   const auto in_front = find_offenders(
       lmp,
-      [&](int i) { return type_set[type[i]] && type_is_wall[type[i]] && distance[i] < -1.0e-9 * h[i]; },
+      [&](int i) {
+        return type_set[type[i]] && type_is_wall[type[i]] == WALL_MIRROR && distance[i] < -1.0e-9 * h[i];
+      },
       [&](int i, double *values) {
         values[0] = distance[i];
         for (int a = 0; a < 3; a++) values[1 + a] = normal[i][a];
@@ -545,6 +573,7 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
   const int *const is_wall = type_is_wall.data();
 
   pack_atoms();    // (re)allocates the packed rows: take their addresses after it
+  if (has_extrapolated_walls) extrapolate_to_walls<DIMENSION, Kernel>();
   const double *const in = packed;
   double *const out = sums;
   constexpr int DRHO = S_DRHO<DIMENSION>(), STRAIN = S_STRAIN_RATE<DIMENSION>(),
@@ -581,7 +610,7 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const int itype = type[i];
-    const bool wall_i = is_wall[itype];
+    const int wall_i = is_wall[itype];
     const double *pi = in + (size_t) i * PACKED;
     const double *xi = pi + P_X;
     const double hi = pi[P_H];
@@ -598,7 +627,7 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const int jtype = type[j];
-      const bool wall_j = is_wall[jtype];
+      const int wall_j = is_wall[jtype];
       if (wall_i && wall_j) continue;
       const double *pj = in + (size_t) j * PACKED;
       double dx[3] = {xi[0] - pj[P_X], xi[1] - pj[P_X + 1],
@@ -621,9 +650,11 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
       PairPartner partner;
       double approach, force[3], t[3][3];
 
-      if (!wall_i && !wall_j) {
+      if (wall_i != WALL_MIRROR && wall_j != WALL_MIRROR) {
         // soil-soil, seen from i: grad = dW/dx_i; j gets the same terms with the opposite
-        // force and dW/dx_j = -grad (Newton's third law)
+        // force and dW/dx_j = -grad (Newton's third law). An extrapolated wall particle is a
+        // partner like a soil particle, with the soil's state extrapolated to it (its own
+        // rates are summed and never used).
         const double *sj = pj + P_STRESS;
         for (int a = 0; a < DIMENSION; a++) {
           partner.dx[a] = dx[a];
@@ -727,6 +758,145 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
   }
 
   unpack_sums<DIMENSION>();
+}
+
+/* ----------------------------------------------------------------------
+   walls with boundary extrapolate (Adami, Hu & Adams 2012, with the full stress; doc/theory.rst
+   4.5): a wall particle w takes the soil's stress, density and velocity, interpolated to it
+   with the kernel (Shepard: weights V_s W_ws over the soil particles s within its support),
+     sigma_w = sum V W sigma_s / sum V W - (g - a_w) . sum V W rho_s (x_w - x_s) / sum V W  I
+   (the weight of the soil between s and w, for soil under gravity g against a wall of
+   acceleration a_w), and moves, as an image of the soil, with 2 v_w - v~ (no slip). The pair
+   loop then treats it as a soil particle of that state. Its packed row is overwritten here.
+------------------------------------------------------------------------- */
+
+template <int DIMENSION, class Kernel> void PairSPHSoil::extrapolate_to_walls()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  if (atom->nmax > nmax_extrapolation) {
+    nmax_extrapolation = atom->nmax;
+    memory->destroy(extrapolation_sums);
+    memory->destroy(extrapolated_state);
+    memory->create(extrapolation_sums, nmax_extrapolation * XSUMS, "pair:extrapolation_sums");
+    memory->create(extrapolated_state, nmax_extrapolation * WSTATE, "pair:extrapolated_state");
+  }
+  if (nall > 0) memset(extrapolation_sums, 0, sizeof(double) * XSUMS * nall);
+  const int *type = atom->type;
+  const int *is_wall = type_is_wall.data();
+  const int newton_pair = force->newton_pair;
+  double **stress = avec->stress;
+  constexpr double SUPPORT2 = Kernel::SUPPORT * Kernel::SUPPORT;
+
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int wall_i = is_wall[type[i]];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = list->firstneigh[i][jj] & NEIGHMASK;
+      const int wall_j = is_wall[type[j]];
+      // a soil particle and an extrapolated wall particle
+      if (!((wall_i == WALL_EXTRAPOLATE && wall_j == SOIL) ||
+            (wall_i == SOIL && wall_j == WALL_EXTRAPOLATE)))
+        continue;
+      const int wall = wall_i ? i : j, soil = wall_i ? j : i;
+      if (!newton_pair && wall >= nlocal) continue;
+      const double *ps = packed + (size_t) soil * PACKED, *pw = packed + (size_t) wall * PACKED;
+      double r2 = 0.0, rw[3] = {0.0, 0.0, 0.0};
+      for (int a = 0; a < DIMENSION; a++) {
+        rw[a] = pw[P_X + a] - ps[P_X + a];
+        r2 += rw[a] * rw[a];
+      }
+      const double hij = 0.5 * (ps[P_H] + pw[P_H]);
+      if (r2 >= SUPPORT2 * hij * hij) continue;
+      const double weight = ps[P_VOLUME] * Kernel::value(DIMENSION, sqrt(r2), hij);
+      double *sum = extrapolation_sums + (size_t) wall * XSUMS;
+      sum[X_WEIGHT] += weight;
+      for (int k = 0; k < 6; k++) sum[X_STRESS + k] += weight * stress[soil][k];
+      sum[X_DENSITY] += weight * ps[P_RHO];
+      for (int a = 0; a < DIMENSION; a++) {
+        sum[X_HYDROSTATIC + a] += weight * ps[P_RHO] * rw[a];
+        sum[X_VELOCITY + a] += weight * ps[P_V + a];
+      }
+    }
+  }
+  if (newton_pair) SphSoilCompat::reverse_comm_pair(comm, this);
+
+  // the soil's body force: the gravity fixes' acceleration vectors
+  double gravity[3] = {0.0, 0.0, 0.0};
+  for (Fix *fix : gravity_fixes) {
+    int dim;
+    if (const double *g = static_cast<const double *>(fix->extract("gvec", dim)))
+      for (int a = 0; a < 3; a++) gravity[a] += g[a];
+  }
+  const double *rho = atom->rho;
+  for (int i = 0; i < nlocal; i++) {
+    if (is_wall[type[i]] != WALL_EXTRAPOLATE) continue;
+    const double *sum = extrapolation_sums + (size_t) i * XSUMS;
+    const double *vw = packed + (size_t) i * PACKED + P_V;
+    double *state = extrapolated_state + (size_t) i * WSTATE;
+    if (!(sum[X_WEIGHT] > 0.0)) {
+      // no soil near: the wall particle is nobody's partner
+      for (int k = 0; k < 6; k++) state[W_STRESS + k] = 0.0;
+      for (int a = 0; a < 3; a++) state[W_VELOCITY + a] = vw[a];
+      state[W_DENSITY] = rho[i];
+      continue;
+    }
+    const double inv_weight = 1.0 / sum[X_WEIGHT];
+    const double *acceleration = integrator ? integrator->wall_acceleration(i) : nullptr;
+    double hydrostatic = 0.0;
+    for (int a = 0; a < DIMENSION; a++)
+      hydrostatic += (gravity[a] - (acceleration ? acceleration[a] : 0.0)) * sum[X_HYDROSTATIC + a];
+    hydrostatic *= inv_weight;
+    const double density = sum[X_DENSITY] * inv_weight;
+    const double inv_density2 = 1.0 / (density * density);
+    for (int k = 0; k < 6; k++)
+      state[W_STRESS + k] = (sum[X_STRESS + k] * inv_weight - (k < 3 ? hydrostatic : 0.0)) * inv_density2;
+    for (int a = 0; a < 3; a++)
+      state[W_VELOCITY + a] = 2.0 * vw[a] - (a < DIMENSION ? sum[X_VELOCITY + a] * inv_weight : vw[a]);
+    state[W_DENSITY] = density;
+  }
+  SphSoilCompat::forward_comm_pair(comm, this);
+
+  for (int i = 0; i < nall; i++) {
+    if (is_wall[type[i]] != WALL_EXTRAPOLATE) continue;
+    const double *state = extrapolated_state + (size_t) i * WSTATE;
+    double *row = packed + (size_t) i * PACKED;
+    for (int k = 0; k < 6; k++) row[P_STRESS + k] = state[W_STRESS + k];
+    for (int a = 0; a < 3; a++) row[P_V + a] = state[W_VELOCITY + a];
+    row[P_RHO] = state[W_DENSITY];
+    row[P_VOLUME] = row[P_MASS] / state[W_DENSITY];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int PairSPHSoil::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int k = 0; k < XSUMS; k++) buf[m++] = extrapolation_sums[(size_t) i * XSUMS + k];
+  return m;
+}
+
+void PairSPHSoil::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++)
+    for (int c = 0; c < XSUMS; c++) extrapolation_sums[(size_t) list[k] * XSUMS + c] += buf[m++];
+}
+
+int PairSPHSoil::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++)
+    for (int c = 0; c < WSTATE; c++) buf[m++] = extrapolated_state[(size_t) list[k] * WSTATE + c];
+  return m;
+}
+
+void PairSPHSoil::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int c = 0; c < WSTATE; c++) extrapolated_state[(size_t) i * WSTATE + c] = buf[m++];
 }
 
 template void PairSPHSoil::eval<2, SPHSoil::CubicSpline>();

@@ -54,10 +54,29 @@ class PairSPHSoil : public Pair {
   SPHSoil::KernelKind kernel;                      // the pair loop is compiled once per kernel
   std::vector<SPHSoil::SoilMaterial> materials;    // per atom type, index 1..ntypes
   std::vector<int> type_set;                       // 1 once pair_coeff gave the type a material
-  // per type, for the pair loop: 1 for walls; a wall's slip (SLIP_*) and friction coefficient
+  // per type, for the pair loop: SOIL or the wall's boundary (WALL_*); a wall's slip (SLIP_*)
+  // and friction coefficient
   std::vector<int> type_is_wall, type_wall_slip;
   std::vector<double> type_wall_friction;
+  enum { SOIL = 0, WALL_MIRROR = 1, WALL_EXTRAPOLATE = 2 };
   enum { SLIP_NONE = 0, SLIP_FREE = 1, SLIP_FRICTION = 2 };
+
+  // Walls that extrapolate the soil's state (Adami, Hu & Adams 2012; doc/theory.rst 4.5). Per
+  // atom, the soil's kernel-weighted sums at a wall particle: weight sum V_s W, stress, density,
+  // rho_s (x_w - x_s) for the hydrostatic correction, velocity; and the wall particle's state
+  // from them: stress / rho^2, the image's velocity, density.
+  enum { X_WEIGHT = 0, X_STRESS = 1, X_DENSITY = 7, X_HYDROSTATIC = 8, X_VELOCITY = 11, XSUMS = 14 };
+  enum { W_STRESS = 0, W_VELOCITY = 6, W_DENSITY = 9, WSTATE = 10 };
+  bool has_extrapolated_walls;
+  int nmax_extrapolation;
+  double *extrapolation_sums, *extrapolated_state;
+  std::vector<class Fix *> gravity_fixes;    // their 'gvec': the soil's body force
+  class FixSPHSoil *integrator;              // the walls' acceleration
+  template <int DIMENSION, class Kernel> void extrapolate_to_walls();
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
   double **sound_speed_ij;                         // mean P-wave speed of a type pair
   double max_h;                                    // largest smoothing length at init
   class AtomVecSPHSoil *avec;

@@ -29,6 +29,8 @@
    - Neighbor::build_one(list, preflag) -> build_one(list), where build()
      marks occasional lists stale itself (whether the two-argument form compiles)
    - Domain::find_region() index -> Domain::get_region_by_id()
+   - Comm::forward_comm_pair(Pair *) -> forward_comm(Pair *), and reverse likewise
+     (whether the Pair overload compiles)
    - Error::one() with exceptions on: 29Sep2021 writes the message but does
      not flush screen and log before main() calls MPI_Abort, so a batch run
      lost it; error_one() flushes on every release (no detection needed)
@@ -249,6 +251,27 @@ inline void build_occasional_list(Neighbor *neighbor, NeighList *list)
 {
   detail::build_occasional(neighbor, list, Preferred());
 }
+
+/* ---------------------------------------------------------------------- */
+// A pair style's own communication
+
+namespace detail {
+  template <class C, class P> auto forward_comm(C *comm, P *pair, Preferred) -> decltype(comm->forward_comm(pair))
+  {
+    comm->forward_comm(pair);
+  }
+  template <class C, class P> void forward_comm(C *comm, P *pair, Fallback) { comm->forward_comm_pair(pair); }
+  template <class C, class P> auto reverse_comm(C *comm, P *pair, Preferred) -> decltype(comm->reverse_comm(pair))
+  {
+    comm->reverse_comm(pair);
+  }
+  template <class C, class P> void reverse_comm(C *comm, P *pair, Fallback) { comm->reverse_comm_pair(pair); }
+}    // namespace detail
+
+// Comm::forward_comm(Pair *) / reverse_comm(Pair *); forward_comm_pair() / reverse_comm_pair()
+// before (whether the Pair overload compiles)
+template <class C> void forward_comm_pair(C *comm, Pair *pair) { detail::forward_comm(comm, pair, Preferred()); }
+template <class C> void reverse_comm_pair(C *comm, Pair *pair) { detail::reverse_comm(comm, pair, Preferred()); }
 
 /* ---------------------------------------------------------------------- */
 // Regions

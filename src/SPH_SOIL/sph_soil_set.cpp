@@ -131,13 +131,14 @@ void SPHSoilSet::command(int narg, char **arg)
           avec->wall_normal[i][k] = normal[k];
           behind += (point[k] - x[i][k]) * normal[k];
         }
+        avec->wall_normal[i][3] = 1.0;    // the length of mu: fixes turn mu only when > 0
         avec->wall_distance[i] = behind;
       }
       iarg += 7;
     } else if (keyword == "nowall") {
       for (int i = 0; i < nlocal; i++) {
         if (!(mask[i] & groupbit)) continue;
-        for (int k = 0; k < 3; k++) avec->wall_normal[i][k] = 0.0;
+        for (int k = 0; k < 4; k++) avec->wall_normal[i][k] = 0.0;
         avec->wall_distance[i] = 0.0;
       }
       iarg += 1;
