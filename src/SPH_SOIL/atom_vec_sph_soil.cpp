@@ -107,8 +107,8 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   set_peratom(atom, WALL_DISTANCE_NAME, &arrays->wall_distance, Atom::DOUBLE, 0);
 
   // Which fields travel where (why):
-  //  comm (every step):  rho, stress, vest   - the pair sum needs them from ghosts,
-  //                      and mu, the wall normal, which turns with a rotating wall
+  //  comm (every step):  rho, stress, vest   - the pair sum needs them from ghosts (and the
+  //                      wall normal mu when a fix may turn walls: the pair style sends it)
   //  reverse (every step): drho, strain rate, spin - ghosts' shares of the pair sums
   //  border:             + mass, h, wall data - constant between reneighborings
   //  exchange:           the whole state and the stress rate: atoms migrate between the
@@ -123,7 +123,7 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
                                           WALL_DISTANCE_NAME};
   std::vector<std::string> all = state;
   all.insert(all.end(), rates.begin(), rates.end());
-  const std::vector<std::string> comm = {"rho", STRESS_NAME, "vest", "mu"};
+  const std::vector<std::string> comm = {"rho", STRESS_NAME, "vest"};
   const std::vector<std::string> border = {"rmass", "rho", STRESS_NAME,       "vest",
                                            H_NAME,  "mu",  WALL_DISTANCE_NAME};
 

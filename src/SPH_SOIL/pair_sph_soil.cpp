@@ -38,7 +38,8 @@ PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), warned_density(false),
     warned_spacing(false), warned_coinciding(false), nmax_packed(0),
     packed(nullptr), sums(nullptr), has_extrapolated_walls(false), nmax_extrapolation(0),
-    extrapolation_sums(nullptr), extrapolated_state(nullptr), integrator(nullptr)
+    extrapolation_sums(nullptr), extrapolated_state(nullptr), walls_may_turn(false),
+    integrator(nullptr)
 {
   single_enable = 0;
   restartinfo = 0;
@@ -283,14 +284,21 @@ void PairSPHSoil::init_style()
   check_particles();
 
   // extrapolated walls: the soil's body force (fix gravity) and the walls' acceleration
+  // walls that turn: the fixes that may turn atoms' orientation (fix rigid and its variants,
+  // fix move) turn the owners' normals; ghosts get them every step, only then
   gravity_fixes.clear();
   integrator = nullptr;
+  bool turning_fix = false;
   for (int ifix = 0; ifix < modify->nfix; ifix++) {
     Fix *fix = modify->fix[ifix];
     if (strcmp(fix->style, "gravity") == 0) gravity_fixes.push_back(fix);
     if (!integrator && strcmp(fix->style, "sph/soil") == 0)
       integrator = dynamic_cast<FixSPHSoil *>(fix);
+    if (strncmp(fix->style, "rigid", 5) == 0 || strcmp(fix->style, "move") == 0) turning_fix = true;
   }
+  walls_may_turn = false;
+  for (int t = 1; t <= atom->ntypes; t++)
+    if (type_is_wall[t] == WALL_MIRROR && turning_fix) walls_may_turn = true;
 
   // a half list: each pair once, shares to both particles (see eval())
   SphSoilCompat::request_half_neighbor_list(neighbor, this, instance_me);
@@ -477,6 +485,7 @@ void *PairSPHSoil::extract(const char *name, int &dim)
 void PairSPHSoil::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  if (walls_may_turn) comm->forward_comm_array(4, atom->mu);
   if (!warned_coinciding) warn_coinciding();
   SPHSoil::with_kernel(kernel, Evaluate{this, domain->dimension});
 }

@@ -68,6 +68,8 @@ class PairSPHSoil : public Pair {
   enum { X_WEIGHT = 0, X_STRESS = 1, X_DENSITY = 7, X_HYDROSTATIC = 8, X_VELOCITY = 11, XSUMS = 14 };
   enum { W_STRESS = 0, W_VELOCITY = 6, W_DENSITY = 9, WSTATE = 10 };
   bool has_extrapolated_walls;
+  bool walls_may_turn;    // mirror walls and a fix that may turn them: their normals go to
+                          // the ghosts every step
   int nmax_extrapolation;
   double *extrapolation_sums, *extrapolated_state;
   std::vector<class Fix *> gravity_fixes;    // their 'gvec': the soil's body force
