@@ -30,6 +30,13 @@
 using namespace LAMMPS_NS;
 using SPHSoil::SoilMaterial;
 
+// kept out of line (GCC and Clang would inline it into the pair loop)
+#if defined(__GNUC__)
+#define SPH_SOIL_NOINLINE __attribute__((noinline))
+#else
+#define SPH_SOIL_NOINLINE
+#endif
+
 /* ---------------------------------------------------------------------- */
 
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
@@ -556,6 +563,114 @@ template <int DIMENSION> void PairSPHSoil::unpack_sums()
 }
 
 /* ----------------------------------------------------------------------
+   add the velocity-gradient term t^ab = (v_j - v_i)^a dW/dx_i^b, weighted, to a particle's row
+   of sums (strain rate in the sums' Voigt order: xx yy xy in 2D, xx yy zz xy xz yz in 3D)
+------------------------------------------------------------------------- */
+
+template <int DIMENSION>
+inline void PairSPHSoil::add_velocity_gradient(double *row, double weight, const double t[3][3])
+{
+  double *e = row + S_STRAIN_RATE<DIMENSION>(), *w = row + S_SPIN<DIMENSION>();
+  e[0] += weight * t[0][0];
+  e[1] += weight * t[1][1];
+  if (DIMENSION == 2) {
+    e[2] += weight * 0.5 * (t[0][1] + t[1][0]);
+    w[0] += weight * 0.5 * (t[0][1] - t[1][0]);
+  } else {
+    e[3] += weight * 0.5 * (t[0][1] + t[1][0]);
+    w[0] += weight * 0.5 * (t[0][1] - t[1][0]);
+    e[2] += weight * t[2][2];
+    e[4] += weight * 0.5 * (t[0][2] + t[2][0]);
+    e[5] += weight * 0.5 * (t[1][2] + t[2][1]);
+    w[1] += weight * 0.5 * (t[0][2] - t[2][0]);
+    w[2] += weight * 0.5 * (t[1][2] - t[2][1]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   soil particle s and the image of mirror wall particle w (Bui 2008; doc/theory.rst 4.3, 4.4):
+   relative to the wall, the image moves with -(d_w/d_s) (v_s - v_w), limited so that
+   v_s - v_image = beta (v_s - v_w), beta = min(1.5, 1 + d_w/d_s) (free slip: the normal part
+   only), and has the density of s and its stress (no slip), the stress's mirror image (free
+   slip) or between the two (friction). s takes its share, w the opposite force (Newton's third
+   law: the soil's force on the structure); a wall moved by a fix (move, rigid) brings its
+   velocity, a wall at rest has v_w = 0 and the terms of a static wall. `sign` dx = x_s - x_w.
+------------------------------------------------------------------------- */
+
+template <int DIMENSION>
+SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double sign,
+                                                     const double dx[3], double r2, double hij,
+                                                     double factor, double c_ij)
+{
+  using SPHSoil::PairPartner;
+  using SPHSoil::pair_density_rate;
+  using SPHSoil::pair_force;
+  using SPHSoil::pair_velocity_gradient;
+  static const int stress_components[6] = {0, 1, 3, 2, 4, 5};
+  constexpr int NSTRESS = DIMENSION == 2 ? 3 : 6;
+  const int newton_pair = force->newton_pair, nlocal = atom->nlocal;
+  const bool update_soil = newton_pair || soil < nlocal;
+  const bool update_wall = newton_pair || wall < nlocal;
+  const double *ps = packed + (size_t) soil * PACKED;
+  const double *pw = packed + (size_t) wall * PACKED;
+  const double *normal = avec->wall_normal[wall];
+  const double wall_distance = avec->wall_distance[wall];
+  const int wall_type = atom->type[wall];
+
+  PairPartner partner;
+  double ds = -wall_distance;
+  for (int a = 0; a < DIMENSION; a++) {
+    partner.dx[a] = sign * dx[a];
+    partner.grad[a] = factor * partner.dx[a];    // dW/dx_s
+    ds += partner.dx[a] * normal[a];
+  }
+  const double beta = ds > 0.0 ? MIN(1.5, 1.0 + wall_distance / ds) : 1.5;
+  // the image's stress: the soil particle's (no slip), its mirror image (free slip: no shear
+  // traction), or the mirror image plus the share of the shear that Coulomb's law allows
+  // (friction); its velocity: the whole relative velocity while the soil sticks, else the
+  // normal part
+  const int slip = type_wall_slip[wall_type];
+  const double *ss = ps + P_STRESS;
+  double share = 1.0;    // of the tangential velocity
+  if (slip == SLIP_NONE) {
+    for (int m = 0; m < NSTRESS; m++) {
+      const int k = stress_components[m];
+      partner.stress_sum[k] = 2.0 * ss[k];
+    }
+  } else if (slip == SLIP_FREE) {
+    SPHSoil::mirrored_stress_sum(ss, normal, partner.stress_sum);
+    share = 0.0;
+  } else {
+    share = SPHSoil::frictional_stress_sum(ss, normal, type_wall_friction[wall_type],
+                                           partner.stress_sum);
+  }
+  double relative[3], vn = 0.0;
+  for (int a = 0; a < DIMENSION; a++) {
+    relative[a] = beta * (ps[P_V + a] - pw[P_V + a]);
+    vn += relative[a] * normal[a];
+  }
+  for (int a = 0; a < DIMENSION; a++)
+    partner.velocity[a] = share == 1.0 ? relative[a] : vn * normal[a];
+  const double rhos = ps[P_RHO];
+  partner.mean_density = rhos;
+  double approach, force_on_soil[3], t[3][3];
+  const double drho = pair_density_rate<DIMENSION>(partner, approach);
+  pair_force<DIMENSION>(partner, approach, r2, hij, c_ij, viscosity_alpha, viscosity_beta,
+                        ps[P_MASS] * pw[P_MASS], force_on_soil);
+  const double mw = pw[P_MASS];
+  if (update_wall) {
+    double *ow = sums + (size_t) wall * SUMS;
+    for (int a = 0; a < DIMENSION; a++) ow[S_FORCE + a] -= force_on_soil[a];
+  }
+  if (!update_soil) return;
+  double *os = sums + (size_t) soil * SUMS;
+  os[S_DRHO<DIMENSION>()] += mw * drho;
+  for (int a = 0; a < DIMENSION; a++) os[S_FORCE + a] += force_on_soil[a];
+  pair_velocity_gradient<DIMENSION>(partner, t);
+  add_velocity_gradient<DIMENSION>(os, mw / rhos, t);
+}
+
+/* ----------------------------------------------------------------------
    the SPH sums of doc/theory.rst section 2 over a half neighbour list: every pair once,
    its contributions to both particles (Newton's third law: momentum is
    conserved exactly); ghosts' shares return to their owners by reverse
@@ -571,13 +686,9 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
-  double **wall_normal = avec->wall_normal;
-  const double *wall_distance = avec->wall_distance;
   // members as locals: the stores to the sums (double *) could otherwise alias the double
   // members, which the compiler would then reload for every pair
   const double alpha = viscosity_alpha, beta_viscosity = viscosity_beta;
-  const int *const wall_slip = type_wall_slip.data();
-  const double *const wall_friction = type_wall_friction.data();
   double *const *const c_type = sound_speed_ij;
   const int *const is_wall = type_is_wall.data();
 
@@ -585,8 +696,7 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
   if (has_extrapolated_walls) extrapolate_to_walls<DIMENSION, Kernel>();
   const double *const in = packed;
   double *const out = sums;
-  constexpr int DRHO = S_DRHO<DIMENSION>(), STRAIN = S_STRAIN_RATE<DIMENSION>(),
-                SPIN = S_SPIN<DIMENSION>();
+  constexpr int DRHO = S_DRHO<DIMENSION>();
   // the stress components the sums use: xx yy xy in 2D, all six in 3D
   static const int stress_components[6] = {0, 1, 3, 2, 4, 5};
   constexpr int NSTRESS = DIMENSION == 2 ? 3 : 6;
@@ -596,24 +706,8 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
   const int *numneigh = list->numneigh;
   int **firstneigh = list->firstneigh;
 
-  // add the velocity-gradient term t^ab = (v_j - v_i)^a dW/dx_i^b, weighted, to a particle
-  // (strain rate in the sums' Voigt order: xx yy xy in 2D, xx yy zz xy xz yz in 3D)
   auto add_gradient = [&](int k, double weight, const double t[3][3]) {
-    double *e = out + (size_t) k * SUMS + STRAIN, *w = out + (size_t) k * SUMS + SPIN;
-    e[0] += weight * t[0][0];
-    e[1] += weight * t[1][1];
-    if (DIMENSION == 2) {
-      e[2] += weight * 0.5 * (t[0][1] + t[1][0]);
-      w[0] += weight * 0.5 * (t[0][1] - t[1][0]);
-    } else {
-      e[3] += weight * 0.5 * (t[0][1] + t[1][0]);
-      w[0] += weight * 0.5 * (t[0][1] - t[1][0]);
-      e[2] += weight * t[2][2];
-      e[4] += weight * 0.5 * (t[0][2] + t[2][0]);
-      e[5] += weight * 0.5 * (t[1][2] + t[2][1]);
-      w[1] += weight * 0.5 * (t[0][2] - t[2][0]);
-      w[2] += weight * 0.5 * (t[1][2] - t[2][1]);
-    }
+    add_velocity_gradient<DIMENSION>(out + (size_t) k * SUMS, weight, t);
   };
 
   for (int ii = 0; ii < inum; ii++) {
@@ -696,68 +790,10 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
         continue;
       }
 
-      // soil particle s and the image of wall particle w (Bui 2008): relative to the wall, the
-      // image moves with -(d_w/d_s) (v_s - v_w), limited so that v_s - v_image =
-      // beta (v_s - v_w), beta = min(1.5, 1 + d_w/d_s) (free-slip: the normal part only), and
-      // has the stress and density of s. s takes its share, w the opposite force (Newton's
-      // third law: the soil's force on the structure); a wall moved by a fix (move, rigid)
-      // brings its velocity, a wall at rest has v_w = 0 and the terms of a static wall.
-      const int soil = wall_i ? j : i, wall = wall_i ? i : j;
-      const bool update_soil = newton_pair || soil < nlocal;
-      const bool update_wall = newton_pair || wall < nlocal;
-      const double *ps = in + (size_t) soil * PACKED;
-      const double *pw = in + (size_t) wall * PACKED;
-      const double sign = wall_i ? -1.0 : 1.0;    // x_s - x_w = sign * dx
-      const double *normal = wall_normal[wall];
-      double ds = -wall_distance[wall];
-      for (int a = 0; a < DIMENSION; a++) {
-        partner.dx[a] = sign * dx[a];
-        partner.grad[a] = factor * partner.dx[a];    // dW/dx_s
-        ds += partner.dx[a] * normal[a];
-      }
-      const double beta = ds > 0.0 ? MIN(1.5, 1.0 + wall_distance[wall] / ds) : 1.5;
-      // the image's velocity relative to s and its stress: no slip, the whole relative velocity
-      // and the soil particle's stress (Bui 2008); free slip, the normal part and the stress's
-      // mirror image (no shear traction); friction, the mirror image plus the share of the
-      // shear that Coulomb's law allows, and the whole velocity while the soil sticks
-      const int slip = wall_slip[type[wall]];
-      const double *ss = ps + P_STRESS;
-      double share = 1.0;    // of the tangential velocity and the shear
-      if (slip == SLIP_NONE) {
-        for (int m = 0; m < NSTRESS; m++) {
-          const int k = stress_components[m];
-          partner.stress_sum[k] = 2.0 * ss[k];
-        }
-      } else if (slip == SLIP_FREE) {
-        SPHSoil::mirrored_stress_sum(ss, normal, partner.stress_sum);
-        share = 0.0;
-      } else {
-        share = SPHSoil::frictional_stress_sum(ss, normal, wall_friction[type[wall]],
-                                               partner.stress_sum);
-      }
-      double relative[3], vn = 0.0;
-      for (int a = 0; a < DIMENSION; a++) {
-        relative[a] = beta * (ps[P_V + a] - pw[P_V + a]);
-        vn += relative[a] * normal[a];
-      }
-      for (int a = 0; a < DIMENSION; a++)
-        partner.velocity[a] = share == 1.0 ? relative[a] : vn * normal[a];
-      const double rhos = ps[P_RHO];
-      partner.mean_density = rhos;
-      const double drho = pair_density_rate<DIMENSION>(partner, approach);
-      pair_force<DIMENSION>(partner, approach, r2, hij, c_ij, alpha, beta_viscosity,
-                            ps[P_MASS] * pw[P_MASS], force);
-      const double mw = pw[P_MASS];
-      if (update_wall) {
-        double *ow = out + (size_t) wall * SUMS;
-        for (int a = 0; a < DIMENSION; a++) ow[S_FORCE + a] -= force[a];
-      }
-      if (!update_soil) continue;
-      double *os = out + (size_t) soil * SUMS;
-      os[DRHO] += mw * drho;
-      for (int a = 0; a < DIMENSION; a++) os[S_FORCE + a] += force[a];
-      pair_velocity_gradient<DIMENSION>(partner, t);
-      add_gradient(soil, mw / rhos, t);
+      // a soil particle and a mirror wall particle: out of line, so that the soil-soil pair
+      // above keeps its registers (inlined, the larger loop cost 15 instructions per pair)
+      mirror_wall_pair<DIMENSION>(wall_i ? j : i, wall_i ? i : j, wall_i ? -1.0 : 1.0, dx, r2, hij,
+                                  factor, c_ij);
     }
 
     double *oi = out + (size_t) i * SUMS;

@@ -105,6 +105,11 @@ class PairSPHSoil : public Pair {
   void set_type_material(int type, const SPHSoil::SoilMaterial &material);
   void read_material_file(const char *file, std::vector<SPHSoil::SoilMaterial> &list);
   template <int DIMENSION, class Kernel> void eval();
+  template <int DIMENSION>
+  void mirror_wall_pair(int soil, int wall, double sign, const double dx[3], double r2, double hij,
+                        double factor, double c_ij);
+  template <int DIMENSION>
+  static void add_velocity_gradient(double *row, double weight, const double t[3][3]);
   // with_kernel() calls it with the kernel type: picks the dimension
   struct Evaluate {
     PairSPHSoil *pair;
