@@ -143,7 +143,6 @@ def main():
             forces, series = force_measures(directory, hold, f0)
             row.update(forces)
         row['wall_seconds'] = validate.wall_seconds(directory)
-        row['directory'] = os.path.abspath(directory)
         table['runs'].append(row)
         curves.append((row, grid, grid_surface, series if gate else None))
 
@@ -182,7 +181,7 @@ def main():
     top.set_title('Aluminium bars released by a lifted gate and instantaneously: final surfaces')
     top.legend(fontsize=7, loc='upper right')
     bottom.axhline(f0, color='grey', ls='--', lw=0.8)
-    bottom.annotate(f'0.5 K0 gamma H^2 = {f0:.1f} N/m', (0.01, f0 + 1.5), xycoords=('axes fraction', 'data'),
+    bottom.annotate(f"0.5 K0 gamma H^2 = {f0:.1f} N/m", (0.5, f0 + 1.5), xycoords=('axes fraction', 'data'),
                     color='grey', fontsize=8)
     bottom.set_xlabel('time since the start of the lift (s)')
     bottom.set_ylabel('force of the soil on the gate (N/m)')
@@ -191,7 +190,8 @@ def main():
                 if c[3] is not None and (np.abs(c[3][2]) > 0).any()), default=0.5)
     bottom.set_xlim(min(0.0, min((c[3][0].min() for c in curves if c[3] is not None), default=0.0)),
                     1.15 * tmax)
-    bottom.legend(fontsize=7, loc='upper right')
+    bottom.set_ylim(top=1.12 * f0)
+    bottom.legend(fontsize=7, loc='center right')
     fig.tight_layout()
     fig.savefig(a.plot, dpi=120)
     print(f'plot_gate: plot written to {a.plot}', file=sys.stderr)
