@@ -1,15 +1,20 @@
 #!/usr/bin/python3
-"""Earth pressure on the retaining wall of examples/retaining_wall against Rankine.
+"""Earth pressure on the retaining wall of examples/retaining_wall against Rankine and Coulomb.
 
     tools/plot_retaining_wall.py [--phi 30] [--height 1] [--json out.json] [--plot out.png]
-                                 LABEL=wall_force.dat [LABEL=wall_force.dat ...]
+                                 LABEL=wall_force.dat[@DELTA] [LABEL=wall_force.dat[@DELTA] ...]
 
 Reads the fix ave/time files of in.retaining_wall (time, wall displacement, force, K = force /
-(0.5 gamma H^2)) and reports for each run
+(0.5 gamma H^2)); DELTA is the wall's friction angle in degrees (-var delta of the example,
+default 0: a smooth wall). A run whose wall moved away from the soil is active, one whose wall
+was pushed into it passive. For each run it reports
   - K_at_rest: the mean K while the wall is at rest (displacement 0), against K0 = 1 - sin(phi);
-  - K_active: the mean K over the last 10% of the wall's travel, against Rankine's
-    Ka = (1 - sin phi)/(1 + sin phi);
-prints them as JSON and plots K against the displacement over H.
+  - K_final: the mean K over the last 10% of the wall's travel, against the limit value: for a
+    smooth wall Rankine's Ka = (1 - sin phi)/(1 + sin phi) or Kp = 1/Ka, for a rough one the
+    horizontal part K cos(delta) of Coulomb's
+        K = cos^2 phi / (cos delta (1 -+ sqrt(sin(phi + delta) sin phi / cos delta))^2)
+    (vertical wall, horizontal surface; - active, + passive... see limit());
+prints them as JSON and plots K against the wall's displacement over H.
 """
 import argparse
 import json
@@ -24,32 +29,49 @@ def read(path):
     return data[:, 2], data[:, 4]    # displacement, K
 
 
+def limit(phi_deg, delta_deg, passive):
+    """Horizontal earth pressure coefficient at failure: Rankine (delta = 0) or Coulomb."""
+    phi, delta = math.radians(phi_deg), math.radians(delta_deg)
+    root = math.sqrt(math.sin(phi + delta) * math.sin(phi) / math.cos(delta))
+    k = math.cos(phi) ** 2 / (math.cos(delta) * (1.0 + (-root if passive else root)) ** 2)
+    return k * math.cos(delta)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument('runs', nargs='+', help='LABEL=FILE')
+    p.add_argument('runs', nargs='+', help='LABEL=FILE[@DELTA]')
     p.add_argument('--phi', type=float, default=30.0)
     p.add_argument('--height', type=float, default=1.0)
     p.add_argument('--json')
     p.add_argument('--plot')
     a = p.parse_args()
-    s = math.sin(math.radians(a.phi))
-    k0, ka = 1.0 - s, (1.0 - s) / (1.0 + s)
-    result = {'phi_deg': a.phi, 'K0': k0, 'Ka': ka, 'runs': {}}
+    k0 = 1.0 - math.sin(math.radians(a.phi))
+    result = {'phi_deg': a.phi, 'K0': k0, 'Ka': limit(a.phi, 0.0, False), 'Kp': limit(a.phi, 0.0, True),
+              'runs': {}}
     curves = []
     for run in a.runs:
         label, path = run.rsplit('=', 1) if '=' in run else (run, run)
+        delta = 0.0
+        if '@' in path:
+            path, delta = path.rsplit('@', 1)
+            delta = float(delta)
         shift, k = read(path)
-        rest = k[shift <= 0.0]
-        moved = shift > 0.0
-        travel = shift.max()
-        last = k[shift >= 0.9 * travel] if travel > 0 else k[-1:]
-        r = {'K_at_rest': float(rest.mean()) if len(rest) else None,
-             'K_active': float(last.mean()),
+        travel = shift[np.argmax(np.abs(shift))]
+        passive = travel < 0.0
+        rest = k[shift == 0.0]
+        final = k[np.abs(shift) >= 0.9 * abs(travel)] if travel != 0.0 else k[-1:]
+        reference = limit(a.phi, delta, passive)
+        r = {'wall': 'passive' if passive else 'active', 'delta_deg': delta,
+             'K_at_rest': float(rest.mean()) if len(rest) else None,
              'at_rest_over_K0': float(rest.mean() / k0) if len(rest) else None,
-             'active_over_Ka': float(last.mean() / ka),
-             'travel_over_H': float(travel / a.height)}
+             'K_final': float(final.mean()),
+             'K_limit': reference,
+             'limit': ('Rankine' if delta == 0.0 else 'Coulomb') + (' Kp' if passive else ' Ka'),
+             'final_over_limit': float(final.mean() / reference),
+             'travel_over_H': float(abs(travel) / a.height)}
         result['runs'][label] = r
-        curves.append((label, shift[moved] / a.height, k[moved], r))
+        moved = shift != 0.0
+        curves.append((label, np.abs(shift[moved]) / a.height, k[moved], r))
     print(json.dumps(result, indent=1))
     if a.json:
         json.dump(result, open(a.json, 'w'), indent=1)
@@ -57,18 +79,27 @@ def main():
         import matplotlib
         matplotlib.use('Agg')
         import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(7, 4.2))
-        for label, x, k, r in curves:
-            ax.plot(100 * x, k, label=f"{label}: K at rest {r['K_at_rest']:.3f}, active {r['K_active']:.3f}")
-        ax.axhline(k0, color='grey', ls='--')
-        ax.axhline(ka, color='black', ls='--')
-        ax.text(0.02, k0 + 0.005, f'K0 = 1 - sin(phi) = {k0:.3f}', color='grey')
-        ax.text(0.02, ka - 0.02, f'Rankine Ka = {ka:.3f}', color='black')
-        ax.set_xlabel('wall displacement / H (%)')
-        ax.set_ylabel('K = horizontal force / (0.5 gamma H^2)')
-        ax.set_title(f'Smooth retaining wall moving away from the soil, phi = {a.phi:g} deg')
-        ax.set_ylim(0.25, 0.6)
-        ax.legend(fontsize=8)
+        kinds = [kind for kind in ('active', 'passive') if any(c[3]['wall'] == kind for c in curves)]
+        fig, axes = plt.subplots(1, len(kinds), figsize=(6.5 * len(kinds), 4.2), squeeze=False)
+        for ax, kind in zip(axes[0], kinds):
+            limits = set()
+            for label, x, k, r in curves:
+                if r['wall'] != kind:
+                    continue
+                line, = ax.plot(100 * x, k, label=f"{label}: {r['K_final']:.3f} = {r['final_over_limit']:.3f} x {r['limit']}")
+                if r['limit'] + str(r['delta_deg']) not in limits:
+                    limits.add(r['limit'] + str(r['delta_deg']))
+                    ax.axhline(r['K_limit'], color=line.get_color(), ls='--', lw=0.8)
+                    ax.text(0.1, r['K_limit'], f"{r['limit']}" + (f", delta {r['delta_deg']:g}" if r['delta_deg'] else '')
+                            + f" = {r['K_limit']:.3f}", fontsize=7, va='bottom')
+            ax.axhline(k0, color='grey', ls=':')
+            ax.text(0.1, k0, f'K0 = 1 - sin(phi) = {k0:.3f}', color='grey', fontsize=7, va='bottom')
+            ax.set_xlabel('wall displacement / H (%)')
+            ax.set_ylabel('K = horizontal force / (0.5 gamma H^2)')
+            ax.set_title(f"{kind.capitalize()} earth pressure, phi = {a.phi:g} deg", fontsize=10)
+            ax.legend(fontsize=7, loc='upper right' if kind == 'active' else 'lower right')
+            if kind == 'active':
+                ax.set_ylim(0.2, 0.6)
         fig.tight_layout()
         fig.savefig(a.plot, dpi=110)
         print(f'plot written to {a.plot}')
