@@ -243,6 +243,10 @@ std::vector<BadInput> cases()
         "Pair sph/soil: 20 wall particle(s) lie in front of their wall plane (atom 1: distance -0.015 "
         "along the normal 0 -1 0); the normal given to 'sph_soil/set <group> wall' must point into "
         "the soil, with the wall particles behind the plane");
+  error("RunExtrapolatedWallFreeSlip", "walls", {"pair_coeff 2 2 wall freeslip boundary extrapolate"},
+        "run 0 post no",
+        "Pair sph/soil: wall type 2 has boundary extrapolate with freeslip: an extrapolated wall is "
+        "no-slip (free slip and friction need the plane of 'boundary mirror')");
   error("RunTwoIntegrators", "walls", {"fix again soil sph/soil"}, "run 0 post no",
         "Fix sph/soil integrate and again both integrate 80 particle(s) (e.g. atom 21); integrate each "
         "particle with one fix");
