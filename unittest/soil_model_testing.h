@@ -5,8 +5,43 @@
 #include "soil_constitutive.h"
 
 #include <cmath>
+#include <random>
 
 namespace SPHSoilTesting {
+
+// R sigma R^T of a Voigt tensor
+inline void rotate(const double r[3][3], const double v[6], double out[6])
+{
+  const double m[3][3] = {{v[0], v[3], v[4]}, {v[3], v[1], v[5]}, {v[4], v[5], v[2]}};
+  double t[3][3];
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      t[a][b] = 0.0;
+      for (int c = 0; c < 3; c++)
+        for (int d = 0; d < 3; d++) t[a][b] += r[a][c] * m[c][d] * r[b][d];
+    }
+  out[0] = t[0][0]; out[1] = t[1][1]; out[2] = t[2][2];
+  out[3] = t[0][1]; out[4] = t[0][2]; out[5] = t[1][2];
+}
+
+inline void random_rotation(std::mt19937 &rng, double r[3][3])
+{
+  // a random unit quaternion
+  std::normal_distribution<double> normal;
+  double q[4], n = 0.0;
+  for (double &x : q) {
+    x = normal(rng);
+    n += x * x;
+  }
+  n = std::sqrt(n);
+  const double w = q[0] / n, x = q[1] / n, y = q[2] / n, z = q[3] / n;
+  const double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+                          {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+                          {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) r[a][b] = m[a][b];
+}
+
 
 // the parameters of a frictional soil (sand-like elasticity unless told)
 inline SPHSoil::FrictionalParameters frictional(double phi, double psi, double c, double bulk = 1.5e6,

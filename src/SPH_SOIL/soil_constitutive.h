@@ -190,6 +190,11 @@ std::string format_number(double value);
 // a whole word as a finite number (the words of material lines); false if it is not one
 bool parse_finite_number(const std::string &word, double &value);
 
+// eigenvalues (descending) and unit eigenvectors (vectors[k] belongs to values[k]) of a
+// symmetric tensor in Voigt order; with xz = yz = 0 (plane strain) in closed form, z an
+// eigenvector exactly; else by Jacobi rotations
+void principal_stresses(const double stress[6], double values[3], double vectors[3][3]);
+
 constexpr double DEG2RAD = 3.14159265358979323846 / 180.0;
 
 }    // namespace SPHSoil

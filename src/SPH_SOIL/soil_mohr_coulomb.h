@@ -30,10 +30,6 @@
 
 namespace SPHSoil {
 
-// eigenvalues (descending) and unit eigenvectors (vectors[k] belongs to values[k]) of a
-// symmetric tensor in Voigt order; with xz = yz = 0 z stays an eigenvector exactly
-void principal_stresses(const double stress[6], double values[3], double vectors[3][3]);
-
 class MohrCoulomb final : public ConstitutiveModel {
  public:
   static constexpr const char *KEYWORD = "mohr_coulomb";
