@@ -31,7 +31,6 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import sph_analysis  # noqa: E402
 import validate_aluminium_bars as validate  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -61,31 +60,12 @@ def read_force(path):
     return data[:, 1], data[:, 2], data[:, 3], data[:, 4]
 
 
-def surface_measures(directory, surface_exp, moved=0.0015):
+def surface_measures(directory, surface_exp, failure_exp):
     """The measures of tools/validate_aluminium_bars.py for one run, and the surface to plot."""
-    initial = sph_analysis.read_dump(os.path.join(directory, 'dump.initial'))
-    final = sph_analysis.read_dump(os.path.join(directory, 'dump.final'))
-    order0, order1 = np.argsort(initial['id']), np.argsort(final['id'])
-    if not np.array_equal(initial['id'][order0], final['id'][order1]):
-        sys.exit(f'plot_gate: dump.initial and dump.final of {directory} hold different particles')
-    x0, y0 = initial['x'][order0], initial['y'][order0]
-    x1, y1 = final['x'][order1], final['y'][order1]
-    spacing = float(np.min(np.diff(np.unique(np.round(x0, 9)))))
-    volume, h = spacing * spacing, 1.2 * spacing
-    sim = sph_analysis.surface_height(x1, y1, volume, h, surface_exp[:, 0])
-    run, grid, grid_surface = sph_analysis.runout(x1, y1, volume, h, 0.002, spacing)
-    top = validate.particle_top(x1, y1, surface_exp[:, 0], spacing)
-    _, _, angle = sph_analysis.failure_line(x0, y0, np.hypot(x1 - x0, y1 - y0) >= moved, spacing, H)
-    result = {
-        'particles': int(len(x1)),
-        'spacing_m': round(spacing, 6),
-        'surface_rms_m': round(float(np.sqrt(np.mean((sim - surface_exp[:, 1]) ** 2))), 6),
-        'runout_m': round(run, 5),
-        'failure_angle_deg': round(angle, 2),
-        'surface_rms_particle_top_m': round(float(np.sqrt(np.mean((top - surface_exp[:, 1]) ** 2))), 6),
-        'runout_particle_top_m': round(validate.runout_particle_top(x1, y1, spacing), 5),
-    }
-    return result, grid, grid_surface
+    m = validate.measure(directory, surface_exp, failure_exp, height=H)
+    keys = ('particles', 'spacing_m', 'surface_rms_m', 'runout_m', 'failure_angle_deg',
+            'surface_rms_particle_top_m', 'runout_particle_top_m')
+    return {k: m['summary'][k] for k in keys}, m['grid'], m['grid_surface']
 
 
 def force_measures(directory, hold, f0):
@@ -122,6 +102,7 @@ def main():
     a = p.parse_args()
 
     surface_exp = validate.read_csv(os.path.join(a.experiment, 'surface.csv'))
+    failure_exp = validate.read_csv(os.path.join(a.experiment, 'failure.csv'))
     k0 = 1.0 - math.sin(math.radians(PHI))
     f0 = 0.5 * k0 * RHO0 * G * H * H
     table = {'K0': round(k0, 6), 'half_K0_gamma_H2_N_per_m': round(f0, 3),
@@ -137,7 +118,7 @@ def main():
                         'hold_s': hold, 'gate_slip': slip})
         else:
             row.update({'run': label or 'instantaneous', 'speed_m_per_s': None})
-        measures, grid, grid_surface = surface_measures(directory, surface_exp)
+        measures, grid, grid_surface = surface_measures(directory, surface_exp, failure_exp)
         row.update(measures)
         if gate:
             forces, series = force_measures(directory, hold, f0)

@@ -63,6 +63,46 @@ def wall_seconds(directory):
     return None
 
 
+def measure(directory, surface_exp, failure_exp, spacing=None, moved=0.0015, height=0.1):
+    """The measures of one run (dump.initial, dump.final in directory) against the experiment:
+    {'summary': the JSON summary, 'x', 'y': final positions, 'grid', 'grid_surface': the
+    simulated surface, 'failure_x', 'failure_y': the failure line}."""
+    initial = sph_analysis.read_dump(os.path.join(directory, 'dump.initial'))
+    final = sph_analysis.read_dump(os.path.join(directory, 'dump.final'))
+    order0 = np.argsort(initial['id'])
+    order1 = np.argsort(final['id'])
+    if not np.array_equal(initial['id'][order0], final['id'][order1]):
+        sys.exit(f'validate: dump.initial and dump.final of {directory} hold different particles')
+    x0, y0 = initial['x'][order0], initial['y'][order0]
+    x1, y1 = final['x'][order1], final['y'][order1]
+    spacing = spacing or float(np.min(np.diff(np.unique(np.round(x0, 9)))))
+
+    volume, h = spacing * spacing, 1.2 * spacing
+    sim_surface = sph_analysis.surface_height(x1, y1, volume, h, surface_exp[:, 0])
+    surface_rms = float(np.sqrt(np.mean((sim_surface - surface_exp[:, 1]) ** 2)))
+    run, grid, grid_surface = sph_analysis.runout(x1, y1, volume, h, 0.002, spacing)
+    top_surface = particle_top(x1, y1, surface_exp[:, 0], spacing)
+    top_rms = float(np.sqrt(np.mean((top_surface - surface_exp[:, 1]) ** 2)))
+    top_run = runout_particle_top(x1, y1, spacing)
+    has_moved = np.hypot(x1 - x0, y1 - y0) >= moved
+    fx, fy, angle = sph_analysis.failure_line(x0, y0, has_moved, spacing, height)
+    exp_slope = np.polyfit(failure_exp[:, 0], failure_exp[:, 1], 1)[0]
+    exp_angle = math.degrees(math.atan(-exp_slope))
+    summary = {
+        'particles': int(len(x1)),
+        'spacing_m': spacing,
+        'surface_rms_m': round(surface_rms, 6),
+        'runout_m': round(run, 5),
+        'runout_experiment_m': 0.43,
+        'surface_rms_particle_top_m': round(top_rms, 6),
+        'runout_particle_top_m': round(top_run, 5),
+        'failure_angle_deg': round(angle, 2),
+        'failure_angle_experiment_deg': round(exp_angle, 2),
+    }
+    return {'summary': summary, 'x': x1, 'y': y1, 'grid': grid, 'grid_surface': grid_surface,
+            'failure_x': fx, 'failure_y': fy}
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument('--dir', default='examples/aluminium_bars', help='directory with dump.initial, dump.final')
@@ -78,41 +118,13 @@ def main():
     exp_dir = a.experiment or os.path.join(a.dir, 'experiment')
     surface_exp = read_csv(os.path.join(exp_dir, 'surface.csv'))
     failure_exp = read_csv(os.path.join(exp_dir, 'failure.csv'))
-    initial = sph_analysis.read_dump(os.path.join(a.dir, 'dump.initial'))
-    final = sph_analysis.read_dump(os.path.join(a.dir, 'dump.final'))
-
-    order0 = np.argsort(initial['id'])
-    order1 = np.argsort(final['id'])
-    if not np.array_equal(initial['id'][order0], final['id'][order1]):
-        sys.exit('validate: dump.initial and dump.final hold different particles')
-    x0, y0 = initial['x'][order0], initial['y'][order0]
-    x1, y1 = final['x'][order1], final['y'][order1]
-    spacing = a.spacing or float(np.min(np.diff(np.unique(np.round(x0, 9)))))
-
-    volume, h = spacing * spacing, 1.2 * spacing
-    sim_surface = sph_analysis.surface_height(x1, y1, volume, h, surface_exp[:, 0])
-    surface_rms = float(np.sqrt(np.mean((sim_surface - surface_exp[:, 1]) ** 2)))
-    run, grid, grid_surface = sph_analysis.runout(x1, y1, volume, h, 0.002, spacing)
-    top_surface = particle_top(x1, y1, surface_exp[:, 0], spacing)
-    top_rms = float(np.sqrt(np.mean((top_surface - surface_exp[:, 1]) ** 2)))
-    top_run = runout_particle_top(x1, y1, spacing)
-    moved = np.hypot(x1 - x0, y1 - y0) >= a.moved
-    fx, fy, angle = sph_analysis.failure_line(x0, y0, moved, spacing, a.height)
-    exp_slope = np.polyfit(failure_exp[:, 0], failure_exp[:, 1], 1)[0]
-    exp_angle = math.degrees(math.atan(-exp_slope))
-
-    summary = {
-        'particles': int(len(x1)),
-        'spacing_m': spacing,
-        'surface_rms_m': round(surface_rms, 6),
-        'runout_m': round(run, 5),
-        'runout_experiment_m': 0.43,
-        'surface_rms_particle_top_m': round(top_rms, 6),
-        'runout_particle_top_m': round(top_run, 5),
-        'failure_angle_deg': round(angle, 2),
-        'failure_angle_experiment_deg': round(exp_angle, 2),
-        'wall_seconds': a.wall_seconds if a.wall_seconds is not None else wall_seconds(a.dir),
-    }
+    m = measure(a.dir, surface_exp, failure_exp, a.spacing, a.moved, a.height)
+    summary = m['summary']
+    summary['wall_seconds'] = a.wall_seconds if a.wall_seconds is not None else wall_seconds(a.dir)
+    x1, y1, run, grid, grid_surface = m['x'], m['y'], summary['runout_m'], m['grid'], m['grid_surface']
+    fx, fy, angle, exp_angle = m['failure_x'], m['failure_y'], summary['failure_angle_deg'], \
+        summary['failure_angle_experiment_deg']
+    spacing, surface_rms = summary['spacing_m'], summary['surface_rms_m']
     text = json.dumps(summary, indent=2)
     print(text)
     if a.json:
