@@ -317,7 +317,7 @@ class TurningWalls : public Walls {
       walls++;
       EXPECT_NEAR(entry.second[nx], -std::sin(angle), 1.0e-12) << "atom " << entry.first;
       EXPECT_NEAR(entry.second[nx + 1], std::cos(angle), 1.0e-12) << "atom " << entry.first;
-      EXPECT_EQ(entry.second[nx + 2], 0.0) << "atom " << entry.first;
+      EXPECT_NEAR(entry.second[nx + 2], 0.0, 1.0e-12) << "atom " << entry.first;
     }
     EXPECT_EQ(walls, 80);    // 20 x 4: the rows at y = -0.003 and 0.003 included
   }
