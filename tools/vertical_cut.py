@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""The critical height of a vertical cut in phi = 0 soil (examples/vertical_cut), by bisection.
+
+Runs examples/vertical_cut/in.vertical_cut for a ratio gamma H / c at a time, each in its own
+directory under --workdir, and calls a run failed when the crest is still moving at the end:
+when it has moved more than --creep (default 0.1%) of H out of the face over the last 30% of the
+run (0.63 to 0.9 s). A cut that stands settles by a few mm and stops, oscillating by less than
+0.07% of H about its rest; one that fails keeps moving, slowly near the critical ratio (a fixed
+displacement at a fixed time calls such a creeping failure stable). Every run's late creep is
+in the JSON, so another threshold can be applied to the same runs. Starting from a bracket that stands at
+its low end and fails at its high end (both are run to check), --steps bisections narrow it;
+the critical ratio is reported as the bracket's middle, against Pastor, Thai & Francescato
+(2000): 3.772 to 3.786. Prints JSON, writes --json and a plot (--plot) of the crest's
+displacement against time for every run.
+
+  tools/vertical_cut.py [--lmp build/lmp] [--np 2] [--d 0.025] [--low 3.0] [--high 4.5]
+                        [--steps 4] [--creep 0.001] [--workdir /tmp/sph_soil_vertical_cut]
+                        [--json examples/vertical_cut/vertical_cut.json]
+                        [--plot examples/vertical_cut/vertical_cut.png]
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import time
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXAMPLE = os.path.join(ROOT, 'examples', 'vertical_cut', 'in.vertical_cut')
+HEIGHT = 1.0
+PASTOR = (3.772, 3.786)
+
+
+def run(args, ratio):
+    directory = os.path.join(args.workdir, f'd{args.d:g}_ratio{ratio:.4f}')
+    os.makedirs(directory, exist_ok=True)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
+    start = time.time()
+    subprocess.run(['mpirun', '-np', str(args.np), args.lmp, '-in', EXAMPLE, '-var', 'ratio', f'{ratio:.6g}',
+                    '-var', 'd', f'{args.d:g}', '-log', 'log.lammps', '-screen', 'none'],
+                   cwd=directory, env=env, check=True)
+    seconds = time.time() - start
+    data = np.loadtxt(os.path.join(directory, 'cut.dat'), comments='#')
+    moved = float(data[-1, 2])
+    late = data[:, 1] >= 0.7 * data[-1, 1]
+    creep = float(data[late, 2][-1] - data[late, 2][0])
+    text = open(os.path.join(directory, 'log.lammps')).read()
+    if not re.search(r'vertical cut: gamma H / c = .*: the crest moved', text):
+        raise SystemExit(f'vertical_cut: the run in {directory} did not finish')
+    return {'ratio': ratio, 'crest_moved_m': round(moved, 5), 'late_creep_m': round(creep, 5),
+            'fails': creep > args.creep * HEIGHT,
+            'wall_seconds': round(seconds, 1), 'time': data[:, 1].tolist(), 'moved': data[:, 2].tolist()}
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument('--lmp', default=os.path.join(ROOT, 'build', 'lmp'))
+    p.add_argument('--np', type=int, default=2)
+    p.add_argument('--d', type=float, default=0.025)
+    p.add_argument('--low', type=float, default=3.0)
+    p.add_argument('--high', type=float, default=4.5)
+    p.add_argument('--steps', type=int, default=4)
+    p.add_argument('--creep', type=float, default=0.001,
+                   help='failure: the crest moves more than this times H over the last 30%% of the run')
+    p.add_argument('--workdir', default='/tmp/sph_soil_vertical_cut')
+    p.add_argument('--json')
+    p.add_argument('--plot')
+    args = p.parse_args()
+    runs = [run(args, args.low), run(args, args.high)]
+    if runs[0]['fails'] or not runs[1]['fails']:
+        raise SystemExit(f'vertical_cut: [{args.low}, {args.high}] is not a bracket: '
+                         f'{[(r["ratio"], r["crest_moved_m"]) for r in runs]}')
+    low, high = args.low, args.high
+    for _ in range(args.steps):
+        middle = 0.5 * (low + high)
+        r = run(args, middle)
+        runs.append(r)
+        if r['fails']:
+            high = middle
+        else:
+            low = middle
+    critical = 0.5 * (low + high)
+    summary = {'spacing_m': args.d, 'late_creep_threshold_over_H': args.creep,
+               'stands_up_to': low, 'fails_from': high, 'critical_ratio': critical,
+               'half_width': 0.5 * (high - low), 'pastor_2000': PASTOR,
+               'critical_over_reference': critical / (0.5 * sum(PASTOR)),
+               'runs': [{k: v for k, v in r.items() if k not in ('time', 'moved')} for r in runs]}
+    print(json.dumps(summary, indent=1))
+    if args.json:
+        json.dump(summary, open(args.json, 'w'), indent=1)
+    if args.plot:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(7, 4.2))
+        for r in sorted(runs, key=lambda r: r['ratio']):
+            ax.plot(r['time'], 100 * np.array(r['moved']) / HEIGHT, color='tab:red' if r['fails'] else 'tab:blue',
+                    label=f"gamma H / c = {r['ratio']:.3f}: {'fails' if r['fails'] else 'stands'} "
+                          f"(last 30%: {100 * r['late_creep_m'] / HEIGHT:.2f}% of H)")
+        ax.set_xlabel('time (s)')
+        ax.set_ylabel("crest's displacement out of the face / H (%)")
+        ax.set_title(f'Vertical cut, phi = 0, d = {100 * args.d:g} cm: critical gamma H / c = {critical:.2f} '
+                     f'+- {0.5 * (high - low):.2f} (Pastor 2000: 3.78)', fontsize=9)
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(args.plot, dpi=110)
+
+
+if __name__ == '__main__':
+    main()
