@@ -12,8 +12,8 @@ was pushed into it passive. For each run it reports
   - K_final: the mean K over the last 10% of the wall's travel, against the limit value: for a
     smooth wall Rankine's Ka = (1 - sin phi)/(1 + sin phi) or Kp = 1/Ka, for a rough one the
     horizontal part K cos(delta) of Coulomb's
-        K = cos^2 phi / (cos delta (1 -+ sqrt(sin(phi + delta) sin phi / cos delta))^2)
-    (vertical wall, horizontal surface; - active, + passive... see limit());
+        K = cos^2 phi / (cos delta (1 + s sqrt(sin(phi + delta) sin phi / cos delta))^2)
+    with s = +1 active, -1 passive (vertical wall, horizontal surface);
 prints them as JSON and plots K against the wall's displacement over H.
 """
 import argparse

@@ -107,11 +107,14 @@ void FixSPHSoil::init()
   // one integrator per particle: two fixes sph/soil over the same particles would each
   // advance them, a step of 2 dt
   const int *mask = atom->mask;
+  // the first fix sph/soil passes the walls' velocities on (a second would see vest = v and
+  // take the walls' acceleration for 0)
   passes_wall_velocities = true;
+  const int me = modify->find_fix(id);
   for (int ifix = 0; ifix < modify->nfix; ifix++) {
     const Fix *other = modify->fix[ifix];
     if (other == this || strcmp(other->style, "sph/soil") != 0) continue;
-    if (ifix < modify->find_fix(id)) passes_wall_velocities = false;
+    if (ifix < me) passes_wall_velocities = false;
     const int otherbit = other->groupbit;
     const auto twice = SphSoilOffenders::find_offenders(
         lmp, [&](int i) { return (mask[i] & groupbit) && (mask[i] & otherbit); },
@@ -233,7 +236,7 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
    The pair style reads every particle's velocity from vest (the field that travels to
    ghosts every step). A wall particle's is its own velocity, which a fix that moves walls
    (move, rigid, ...) has set by now, whatever the order of the fixes; 0 for a wall at rest.
-   Every fix sph/soil does it for all wall particles: walls belong to no soil group.
+   The first fix sph/soil does it for all wall particles: walls belong to no soil group.
 ------------------------------------------------------------------------- */
 
 void FixSPHSoil::post_integrate()

@@ -30,6 +30,12 @@
 using namespace LAMMPS_NS;
 using SPHSoil::SoilMaterial;
 
+namespace {
+// the stress components the sums use: xx yy xy in 2D, all six in 3D (Voigt indices)
+const int STRESS_COMPONENTS[6] = {0, 1, 3, 2, 4, 5};
+template <int DIMENSION> constexpr int stress_component_count() { return DIMENSION == 2 ? 3 : 6; }
+}    // namespace
+
 // kept out of line (GCC and Clang would inline it into the pair loop)
 #if defined(__GNUC__)
 #define SPH_SOIL_NOINLINE __attribute__((noinline))
@@ -264,10 +270,11 @@ void PairSPHSoil::init_style()
   if (max_h <= 0.0) error->all(FLERR, "Pair sph/soil: no particle with a material and h > 0");
 
   // every type has a material here (init_one stops otherwise): a plain flag for the pair loop
-  type_is_wall.assign(atom->ntypes + 1, 0);
+  type_wall_kind.assign(atom->ntypes + 1, 0);
   type_wall_slip.assign(atom->ntypes + 1, SLIP_NONE);
   type_wall_friction.assign(atom->ntypes + 1, 0.0);
   has_extrapolated_walls = false;
+  bool has_mirror_walls = false;
   for (int t = 1; t <= atom->ntypes; t++) {
     const SoilMaterial &m = materials[t];
     if (!m.is_wall()) continue;
@@ -276,8 +283,9 @@ void PairSPHSoil::init_style()
         ? (free_slip ? WallSlip::freeslip : WallSlip::noslip)
         : m.slip;
     const bool extrapolated = m.boundary == SPHSoil::WallBoundary::extrapolate;
-    type_is_wall[t] = extrapolated ? WALL_EXTRAPOLATE : WALL_MIRROR;
+    type_wall_kind[t] = extrapolated ? WALL_EXTRAPOLATE : WALL_MIRROR;
     has_extrapolated_walls = has_extrapolated_walls || extrapolated;
+    has_mirror_walls = has_mirror_walls || !extrapolated;
     // free slip and friction act across a plane; an extrapolated wall has none
     if (extrapolated && slip != WallSlip::noslip)
       error->all(FLERR, "Pair sph/soil: wall type {} has boundary extrapolate with {}: an "
@@ -303,9 +311,7 @@ void PairSPHSoil::init_style()
       integrator = dynamic_cast<FixSPHSoil *>(fix);
     if (strncmp(fix->style, "rigid", 5) == 0 || strcmp(fix->style, "move") == 0) turning_fix = true;
   }
-  walls_may_turn = false;
-  for (int t = 1; t <= atom->ntypes; t++)
-    if (type_is_wall[t] == WALL_MIRROR && turning_fix) walls_may_turn = true;
+  walls_may_turn = has_mirror_walls && turning_fix;
 
   // a half list: each pair once, shares to both particles (see eval())
   SphSoilCompat::request_half_neighbor_list(neighbor, this, instance_me);
@@ -333,7 +339,7 @@ void PairSPHSoil::check_particles()
   const auto no_plane = find_offenders(
       lmp,
       [&](int i) {
-        return type_set[type[i]] && type_is_wall[type[i]] == WALL_MIRROR &&
+        return type_set[type[i]] && type_wall_kind[type[i]] == WALL_MIRROR &&
             normal[i][0] * normal[i][0] + normal[i][1] * normal[i][1] + normal[i][2] * normal[i][2] == 0.0;
       },
       position);
@@ -346,7 +352,7 @@ void PairSPHSoil::check_particles()
   const auto in_front = find_offenders(
       lmp,
       [&](int i) {
-        return type_set[type[i]] && type_is_wall[type[i]] == WALL_MIRROR && distance[i] < -1.0e-9 * h[i];
+        return type_set[type[i]] && type_wall_kind[type[i]] == WALL_MIRROR && distance[i] < -1.0e-9 * h[i];
       },
       [&](int i, double *values) {
         values[0] = distance[i];
@@ -367,7 +373,7 @@ void PairSPHSoil::check_particles()
     const auto off = find_offenders(
         lmp,
         [&](int i) {
-          return type_set[type[i]] && !type_is_wall[type[i]] &&
+          return type_set[type[i]] && !type_wall_kind[type[i]] &&
               std::fabs(rho[i] / materials[type[i]].density - 1.0) > 0.1;
         },
         [&](int i, double *values) {
@@ -606,8 +612,7 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   using SPHSoil::pair_density_rate;
   using SPHSoil::pair_force;
   using SPHSoil::pair_velocity_gradient;
-  static const int stress_components[6] = {0, 1, 3, 2, 4, 5};
-  constexpr int NSTRESS = DIMENSION == 2 ? 3 : 6;
+  constexpr int NSTRESS = stress_component_count<DIMENSION>();
   const int newton_pair = force->newton_pair, nlocal = atom->nlocal;
   const bool update_soil = newton_pair || soil < nlocal;
   const bool update_wall = newton_pair || wall < nlocal;
@@ -634,7 +639,7 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   double share = 1.0;    // of the tangential velocity
   if (slip == SLIP_NONE) {
     for (int m = 0; m < NSTRESS; m++) {
-      const int k = stress_components[m];
+      const int k = STRESS_COMPONENTS[m];
       partner.stress_sum[k] = 2.0 * ss[k];
     }
   } else if (slip == SLIP_FREE) {
@@ -699,16 +704,14 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
   // members, which the compiler would then reload for every pair
   const double alpha = viscosity_alpha, beta_viscosity = viscosity_beta;
   double *const *const c_type = sound_speed_ij;
-  const int *const is_wall = type_is_wall.data();
+  const int *const wall_kind = type_wall_kind.data();
 
   pack_atoms();    // (re)allocates the packed rows: take their addresses after it
   if (has_extrapolated_walls) extrapolate_to_walls<DIMENSION, Kernel>();
   const double *const in = packed;
   double *const out = sums;
   constexpr int DRHO = S_DRHO<DIMENSION>();
-  // the stress components the sums use: xx yy xy in 2D, all six in 3D
-  static const int stress_components[6] = {0, 1, 3, 2, 4, 5};
-  constexpr int NSTRESS = DIMENSION == 2 ? 3 : 6;
+  constexpr int NSTRESS = stress_component_count<DIMENSION>();
 
   const int inum = list->inum;
   const int *ilist = list->ilist;
@@ -722,7 +725,7 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const int itype = type[i];
-    const int wall_i = is_wall[itype];
+    const int wall_i = wall_kind[itype];
     const double *pi = in + (size_t) i * PACKED;
     const double *xi = pi + P_X;
     const double hi = pi[P_H];
@@ -739,7 +742,7 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const int jtype = type[j];
-      const int wall_j = is_wall[jtype];
+      const int wall_j = wall_kind[jtype];
       if (wall_i && wall_j) continue;
       const double *pj = in + (size_t) j * PACKED;
       double dx[3] = {xi[0] - pj[P_X], xi[1] - pj[P_X + 1],
@@ -774,7 +777,7 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
           partner.velocity[a] = vi[a] - pj[P_V + a];
         }
         for (int m = 0; m < NSTRESS; m++) {
-          const int k = stress_components[m];
+          const int k = STRESS_COMPONENTS[m];
           partner.stress_sum[k] = si[k] + sj[k];
         }
         partner.mean_density = 0.5 * (rhoi + pj[P_RHO]);
@@ -836,17 +839,17 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::extrapolate_to_walls()
   }
   if (nall > 0) memset(extrapolation_sums, 0, sizeof(double) * XSUMS * nall);
   const int *type = atom->type;
-  const int *is_wall = type_is_wall.data();
+  const int *wall_kind = type_wall_kind.data();
   const int newton_pair = force->newton_pair;
   double **stress = avec->stress;
   constexpr double SUPPORT2 = Kernel::SUPPORT * Kernel::SUPPORT;
 
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
-    const int wall_i = is_wall[type[i]];
+    const int wall_i = wall_kind[type[i]];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = list->firstneigh[i][jj] & NEIGHMASK;
-      const int wall_j = is_wall[type[j]];
+      const int wall_j = wall_kind[type[j]];
       // a soil particle and an extrapolated wall particle
       if (!((wall_i == WALL_EXTRAPOLATE && wall_j == SOIL) ||
             (wall_i == SOIL && wall_j == WALL_EXTRAPOLATE)))
@@ -883,7 +886,7 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::extrapolate_to_walls()
   }
   const double *rho = atom->rho;
   for (int i = 0; i < nlocal; i++) {
-    if (is_wall[type[i]] != WALL_EXTRAPOLATE) continue;
+    if (wall_kind[type[i]] != WALL_EXTRAPOLATE) continue;
     const double *sum = extrapolation_sums + (size_t) i * XSUMS;
     const double *vw = packed + (size_t) i * PACKED + P_V;
     double *state = extrapolated_state + (size_t) i * WSTATE;
@@ -911,7 +914,7 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::extrapolate_to_walls()
   SphSoilCompat::forward_comm_pair(comm, this);
 
   for (int i = 0; i < nall; i++) {
-    if (is_wall[type[i]] != WALL_EXTRAPOLATE) continue;
+    if (wall_kind[type[i]] != WALL_EXTRAPOLATE) continue;
     const double *state = extrapolated_state + (size_t) i * WSTATE;
     double *row = packed + (size_t) i * PACKED;
     for (int k = 0; k < 6; k++) row[P_STRESS + k] = state[W_STRESS + k];

@@ -56,7 +56,7 @@ class PairSPHSoil : public Pair {
   std::vector<int> type_set;                       // 1 once pair_coeff gave the type a material
   // per type, for the pair loop: SOIL or the wall's boundary (WALL_*); a wall's slip (SLIP_*)
   // and friction coefficient
-  std::vector<int> type_is_wall, type_wall_slip;
+  std::vector<int> type_wall_kind, type_wall_slip;
   std::vector<double> type_wall_friction;
   enum { SOIL = 0, WALL_MIRROR = 1, WALL_EXTRAPOLATE = 2 };
   enum { SLIP_NONE = 0, SLIP_FREE = 1, SLIP_FRICTION = 2 };
