@@ -19,8 +19,11 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-STYLES = {'sph_soil': 'in.bench_sph_soil', 'sph_taitwater': 'in.bench_taitwater',
-          'smd_ulsph': 'in.bench_ulsph'}
+# name: input and its variables; sph_soil_cohesive is the same layout with a cohesive soil in
+# tension (the loop with the artificial stress)
+STYLES = {'sph_soil': ('in.bench_sph_soil', []),
+          'sph_soil_cohesive': ('in.bench_sph_soil', ['-var', 'cohesion', '1.0e5']),
+          'sph_taitwater': ('in.bench_taitwater', []), 'smd_ulsph': ('in.bench_ulsph', [])}
 
 
 def run(lmp, infile, workdir, np=1, extra=()):
@@ -39,11 +42,11 @@ def run(lmp, infile, workdir, np=1, extra=()):
             'pair_fraction': float(pair[-1]) / seconds if pair else None}
 
 
-def instructions(lmp, infile, workdir, steps):
+def instructions(lmp, infile, workdir, steps, extra=()):
     """Instructions of a whole lmp process (1 rank, no mpirun) counted by callgrind."""
     out = os.path.join(workdir, f'callgrind.{steps}')
     cmd = ['valgrind', '--tool=callgrind', f'--callgrind-out-file={out}', lmp, '-in', infile,
-           '-log', 'none', '-screen', 'none', '-var', 'steps', str(steps)]
+           '-log', 'none', '-screen', 'none', '-var', 'steps', str(steps)] + list(extra)
     subprocess.run(cmd, cwd=workdir, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     for line in open(out):
         if line.startswith('summary:') or line.startswith('totals:'):
@@ -51,8 +54,9 @@ def instructions(lmp, infile, workdir, steps):
     raise SystemExit(f'benchmark: no instruction total in {out}')
 
 
-def instructions_per_particle_step(lmp, infile, workdir, atoms, steps=50):
-    return (instructions(lmp, infile, workdir, steps) - instructions(lmp, infile, workdir, 0)) / (atoms * steps)
+def instructions_per_particle_step(lmp, infile, workdir, atoms, steps=50, extra=()):
+    return (instructions(lmp, infile, workdir, steps, extra) -
+            instructions(lmp, infile, workdir, 0, extra)) / (atoms * steps)
 
 
 def lammps_version(lmp):
@@ -88,8 +92,8 @@ def main():
         # round robin: on a shared machine the speed drifts; each style gets a run in every
         # round, so that the best runs of all styles come from the same conditions
         for _ in range(a.repeat):
-            for name, infile in STYLES.items():
-                r = run(lmp, os.path.join(HERE, infile), work)
+            for name, (infile, extra) in STYLES.items():
+                r = run(lmp, os.path.join(HERE, infile), work, extra=extra)
                 if name not in results or r['seconds'] < results[name]['seconds']:
                     results[name] = r
         for name in STYLES:
@@ -102,9 +106,9 @@ def main():
             r['note'] = 'short mode (300 steps); atoms include wall particles'
             results['aluminium_bars_short'] = r
         if a.callgrind:
-            for name, infile in STYLES.items():
+            for name, (infile, extra) in STYLES.items():
                 n = instructions_per_particle_step(lmp, os.path.join(HERE, infile), work,
-                                                   results[name]['atoms'])
+                                                   results[name]['atoms'], extra=extra)
                 results[name]['instructions_per_particle_step'] = n
                 print(f'benchmark: {name}: {n:.0f} instructions/particle-step', file=sys.stderr)
 
@@ -115,6 +119,7 @@ def main():
         'results': results,
         'ratio_sph_soil_to_sph_taitwater': ours / results['sph_taitwater']['particle_steps_per_second_per_core'],
         'ratio_sph_soil_to_smd_ulsph': ours / results['smd_ulsph']['particle_steps_per_second_per_core'],
+        'ratio_cohesive_to_cohesionless': results['sph_soil_cohesive']['particle_steps_per_second_per_core'] / ours,
         'lammps': lammps_version(lmp),
     }
     text = json.dumps(summary, indent=2)

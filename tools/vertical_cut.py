@@ -14,7 +14,7 @@ the critical ratio is reported as the bracket's middle, against Pastor, Thai & F
 displacement against time for every run.
 
   tools/vertical_cut.py [--lmp build/lmp] [--np 2] [--d 0.025] [--low 3.0] [--high 4.5]
-                        [--steps 4] [--creep 0.001] [--workdir /tmp/sph_soil_vertical_cut]
+                        [--steps 4] [--creep 0.001] [--refine] [--workdir /tmp/sph_soil_vertical_cut]
                         [--json examples/vertical_cut/vertical_cut.json]
                         [--plot examples/vertical_cut/vertical_cut.png]
 """
@@ -34,12 +34,14 @@ PASTOR = (3.772, 3.786)
 
 
 def run(args, ratio):
-    directory = os.path.join(args.workdir, f'd{args.d:g}_ratio{ratio:.4f}')
+    tag = '_refined' if args.refine else ''
+    directory = os.path.join(args.workdir, f'd{args.d:g}{tag}_ratio{ratio:.4f}')
     os.makedirs(directory, exist_ok=True)
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
     start = time.time()
     subprocess.run(['mpirun', '-np', str(args.np), args.lmp, '-in', EXAMPLE, '-var', 'ratio', f'{ratio:.6g}',
-                    '-var', 'd', f'{args.d:g}', '-log', 'log.lammps', '-screen', 'none'],
+                    '-var', 'd', f'{args.d:g}', '-var', 'refine', '1' if args.refine else '0',
+                    '-log', 'log.lammps', '-screen', 'none'],
                    cwd=directory, env=env, check=True)
     seconds = time.time() - start
     data = np.loadtxt(os.path.join(directory, 'cut.dat'), comments='#')
@@ -64,6 +66,8 @@ def main():
     p.add_argument('--steps', type=int, default=4)
     p.add_argument('--creep', type=float, default=0.001,
                    help='failure: the crest moves more than this times H over the last 30%% of the run')
+    p.add_argument('--refine', action='store_true',
+                   help='dynamic refinement (-var refine 1): the particles that shear split once')
     p.add_argument('--workdir', default='/tmp/sph_soil_vertical_cut')
     p.add_argument('--json')
     p.add_argument('--plot')
@@ -82,7 +86,7 @@ def main():
         else:
             low = middle
     critical = 0.5 * (low + high)
-    summary = {'spacing_m': args.d, 'late_creep_threshold_over_H': args.creep,
+    summary = {'spacing_m': args.d, 'refined': args.refine, 'late_creep_threshold_over_H': args.creep,
                'stands_up_to': low, 'fails_from': high, 'critical_ratio': critical,
                'half_width': 0.5 * (high - low), 'pastor_2000': PASTOR,
                'critical_over_reference': critical / (0.5 * sum(PASTOR)),
@@ -101,7 +105,8 @@ def main():
                           f"(last 30%: {100 * r['late_creep_m'] / HEIGHT:.2f}% of H)")
         ax.set_xlabel('time (s)')
         ax.set_ylabel("crest's displacement out of the face / H (%)")
-        ax.set_title(f'Vertical cut, phi = 0, d = {100 * args.d:g} cm: critical gamma H / c = {critical:.2f} '
+        refined = ', refined once' if args.refine else ''
+        ax.set_title(f'Vertical cut, phi = 0, d = {100 * args.d:g} cm{refined}: critical gamma H / c = {critical:.2f} '
                      f'+- {0.5 * (high - low):.2f} (Pastor 2000: 3.78)', fontsize=9)
         ax.legend(fontsize=7)
         fig.tight_layout()

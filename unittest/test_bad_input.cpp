@@ -135,7 +135,7 @@ std::vector<BadInput> cases()
 
   // ---- pair_style sph/soil
   error("PairUnknownKeyword", "patch", {}, "pair_style sph/soil gamma 1",
-        "Illegal pair_style sph/soil keyword gamma (allowed: alpha, beta, wall, kernel)");
+        "Illegal pair_style sph/soil keyword gamma (allowed: alpha, beta, wall, kernel, artificial_stress)");
   error("PairKernel", "patch", {}, "pair_style sph/soil kernel gaussian",
         "Illegal pair_style sph/soil kernel gaussian: must be one of cubic, wendland2");
   error("PairKeywordWithoutValue", "patch", {}, "pair_style sph/soil alpha",
@@ -148,6 +148,8 @@ std::vector<BadInput> cases()
         "Illegal pair_style sph/soil beta -0.5: must be >= 0");
   error("PairWall", "patch", {}, "pair_style sph/soil wall sticky",
         "Illegal pair_style sph/soil wall sticky: must be noslip or freeslip");
+  error("PairArtificialStress", "patch", {}, "pair_style sph/soil artificial_stress -0.1",
+        "Illegal pair_style sph/soil artificial_stress -0.1: must be in [0, 1]");
   error("PairFitMoved", "patch", {}, "pair_style sph/soil fit associated",
         "Illegal pair_style sph/soil keyword fit: the Drucker-Prager fit is now a parameter of the "
         "material ('soil rho0 drucker_prager K nu phi psi c fit associated' in pair_coeff or a material "
@@ -172,6 +174,14 @@ std::vector<BadInput> cases()
   error("CoeffNoExactFit", "patch", {}, "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 15 0",
         "material of type(s) 1: drucker_prager fit exact: no plane-strain fit is exact for dilatancy "
         "angle psi = 15 degrees");
+  error("CoeffTensionNegative", "patch", {},
+        "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 1e4 tension -5",
+        "material of type(s) 1: drucker_prager tension = -5: the tensile strength must be >= 0 Pa");
+  error("CoeffTensionBeyondApex", "patch", {},
+        "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 1e4 tension 1e5",
+        "material of type(s) 1: drucker_prager tension = 100000: the tensile strength must be in [0, "
+        "27776.1] Pa, the mean stress at the apex of the cone k_c / (3 alpha_phi) of this phi and c "
+        "(the apex limits the tension already)");
   error("CoeffDensity", "patch", {}, "pair_coeff 1 1 soil 0 0.7e6 0.3 19.8 0 0",
         "material of type(s) 1: density rho0 = 0 must be finite and > 0");
   error("CoeffBulkModulus", "patch", {}, "pair_coeff 1 1 soil 2650 -1 0.3 19.8 0 0",

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -269,7 +270,7 @@ TEST(DruckerPrager, RegistryBuildsItFromTheWordsOfAMaterialLine)
   fails({"1.5e6", "0.3", "45", "0", "0", "fit"},
         "drucker_prager fit '': must be exact, associated or nonassociated");
   fails({"1.5e6", "0.3", "45", "0", "0", "hardening", "1"},
-        "drucker_prager: unknown option 'hardening' (allowed: fit)");
+        "drucker_prager: unknown option 'hardening' (allowed: fit, tension)");
   fails({"1.5e6", "0.3", "45", "20", "0"},
         "drucker_prager fit exact: no plane-strain fit is exact for dilatancy angle psi = 20 "
         "degrees: the flow potential sqrt(J2) + 3 sin(psi) I1 allows plastic flow in plane strain "
@@ -636,6 +637,97 @@ TEST(DruckerPrager, PlaneStrainSimpleShearReachesAndStaysOnTheSurface)
       } else {
         EXPECT_NEAR(min_i1, -3.0 * p0, 1.0e-9 * p0);
         EXPECT_NEAR(max_i1, -3.0 * p0, 1.0e-9 * p0);
+      }
+    }
+}
+
+// phi = 0 (pure cohesion, a Tresca/von Mises soil) in plane-strain simple shear reaches
+// sqrt(J2) = c exactly, whatever the mean stress, compression or tension (no cap without
+// 'tension'); the exact fit and the others agree for phi = 0
+TEST(DruckerPrager, FrictionlessCohesiveSimpleShearReachesSqrtJ2EqualToC)
+{
+  const double c = 2.0e4;
+  for (double p0 : {1.0e5, 0.0, -3.0e4})
+    for (DruckerPragerFit fit :
+         {DruckerPragerFit::exact, DruckerPragerFit::associated, DruckerPragerFit::nonassociated}) {
+      const DruckerPrager model(soil(0.0, 0.0, c, 1.5e6, 0.3, fit));
+      EXPECT_EQ(model.tensile_strength(), std::numeric_limits<double>::infinity());
+      double stress[6];
+      SPHSoilTesting::simple_shear(model, p0, stress);
+      EXPECT_NEAR(sqrt_j2(stress), c, 1.0e-12 * c) << "p0 " << p0;
+      EXPECT_NEAR(first_invariant(stress), -3.0 * p0, 1.0e-9 * c);
+      EXPECT_NEAR(SPHSoilTesting::in_plane_shear(stress), c, 1.0e-12 * c);
+    }
+}
+
+// the tensile strength: the apex c cot(phi) by default (psi = 0), infinite for phi = 0, 0 without
+// cohesion, T when 'tension T' sets one
+TEST(DruckerPrager, TensileStrengthIsTheApexOrTheCutOff)
+{
+  const double c = 1.0e4;
+  const DruckerPrager cone(soil(20.0, 0.0, c, 1.5e6, 0.3, DruckerPragerFit::exact));
+  EXPECT_NEAR(cone.tensile_strength(), c / std::tan(20.0 * PI / 180.0), 1.0e-9 * c);
+  EXPECT_EQ(DruckerPrager(soil(30.0, 0.0, 0.0)).tensile_strength(), 0.0);
+  DruckerPragerParameters capped = soil(20.0, 0.0, c, 1.5e6, 0.3, DruckerPragerFit::exact);
+  capped.tension = 2.0e3;
+  EXPECT_EQ(DruckerPrager(capped).tensile_strength(), 2.0e3);
+  capped = soil(0.0, 0.0, c);
+  capped.tension = 0.0;
+  EXPECT_EQ(DruckerPrager(capped).tensile_strength(), 0.0);
+}
+
+// 'tension T' read from a material line; out of [0, apex] it is refused, naming the range
+TEST(DruckerPrager, TensionOptionIsReadAndChecked)
+{
+  std::string error;
+  auto model = make_model("drucker_prager", {"1.5e6", "0.3", "20", "0", "1e4", "tension", "3e3"}, error);
+  ASSERT_NE(model, nullptr) << error;
+  EXPECT_EQ(model->tensile_strength(), 3.0e3);
+  model = make_model("drucker_prager", {"1.5e6", "0.3", "0", "0", "1e4", "tension", "1e9", "fit", "associated"}, error);
+  ASSERT_NE(model, nullptr) << error;
+  EXPECT_EQ(model->tensile_strength(), 1.0e9);
+  EXPECT_EQ(make_model("drucker_prager", {"1.5e6", "0.3", "20", "0", "1e4", "tension", "-1"}, error), nullptr);
+  EXPECT_EQ(error, "drucker_prager tension = -1: the tensile strength must be >= 0 Pa");
+  EXPECT_EQ(make_model("drucker_prager", {"1.5e6", "0.3", "20", "0", "1e4", "tension", "1e5"}, error), nullptr);
+  EXPECT_EQ(error, "drucker_prager tension = 100000: the tensile strength must be in [0, 27474.8] Pa, the "
+                   "mean stress at the apex of the cone k_c / (3 alpha_phi) of this phi and c (the apex "
+                   "limits the tension already)");
+  EXPECT_EQ(make_model("drucker_prager", {"1.5e6", "0.3", "20", "0", "1e4", "tension", "x"}, error), nullptr);
+  EXPECT_EQ(error, "drucker_prager tension 'x': the tensile strength must be a number (Pa), >= 0");
+}
+
+// Uniaxial and biaxial plane-strain stretching of a cohesive soil, explicit steps + return: the
+// mean stress never exceeds the tension cut-off T, reaches it and stays there; the shear stays
+// within the cone at that mean stress. For phi = 20 with and without 'tension', and phi = 0 with it.
+TEST(DruckerPrager, StretchingNeverExceedsTheTensionCutOff)
+{
+  const double c = 1.0e4, dt = 1.0e-5;
+  const double spin[3] = {0.0, 0.0, 0.0};
+  for (double phi : {20.0, 0.0})
+    for (double tension : {std::numeric_limits<double>::infinity(), 2.0e3}) {
+      if (phi == 0.0 && tension == std::numeric_limits<double>::infinity()) continue;
+      DruckerPragerParameters p = soil(phi, 0.0, c, 1.5e6, 0.3, DruckerPragerFit::exact);
+      p.tension = tension;
+      const DruckerPrager model(p);
+      const double cutoff = model.tensile_strength();
+      for (int biaxial = 0; biaxial < 2; biaxial++) {
+        SCOPED_TRACE("phi " + std::to_string(phi) + " T " + std::to_string(tension) +
+                     (biaxial ? " biaxial" : " uniaxial"));
+        const double strain_rate[6] = {1.0, biaxial ? 1.0 : 0.0, 0.0, 0.0, 0.0, 0.0};
+        double stress[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        double largest_mean = -1.0e300;
+        for (int n = 0; n < 5000; n++) {    // strain 0.05, far past the cut-off (~0.001)
+          double rate[6];
+          model.stress_rate(stress, strain_rate, spin, rate);
+          for (int k = 0; k < 6; k++) stress[k] += dt * rate[k];
+          model.return_to_admissible(stress);
+          largest_mean = std::max(largest_mean, mean_stress(stress));
+          ASSERT_LE(model.yield_function(stress), 1.0e-9 * c);
+        }
+        EXPECT_LE(largest_mean, cutoff * (1.0 + 1.0e-12));
+        EXPECT_NEAR(mean_stress(stress), cutoff, 1.0e-9 * c);
+        EXPECT_TRUE(model.on_yield_surface(stress));
+        EXPECT_LE(sqrt_j2(stress), model.k_c() - model.alpha_phi() * 3.0 * cutoff + 1.0e-9 * c);
       }
     }
 }

@@ -228,8 +228,10 @@ TEST_F(Walls, BlockOnAFrictionalSlopeSticksBelowAndSlidesAboveTheFrictionAngle)
       // the normal stress of the block's weight, no shear: the tilt loads the contact
       command(fmt::format("sph_soil/set soil geostatic 0.008 2000 {} 0.5", g * std::cos(theta)));
       command("sph_soil/set floor wall 0 0 0 0 1 0");
-      command("pair_style sph/soil alpha 1 beta 1");
-      // elastic: a cohesion far above the block's stresses
+      command("pair_style sph/soil alpha 1 beta 1 artificial_stress 0");
+      // elastic: a cohesion far above the block's stresses, and no artificial stress (which the
+      // cohesion switches on; with it this block at 1.5 mu slows down instead of sliding:
+      // doc/theory.rst section 2.5)
       command("pair_coeff 1 1 soil 2000 2e6 0.3 30 0 1e5");
       command("pair_coeff 2 2 wall " + c.slip);
       command(fmt::format("fix gravity soil gravity {} vector {} {} 0", g, std::sin(theta),

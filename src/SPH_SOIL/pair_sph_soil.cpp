@@ -15,6 +15,7 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "soil_artificial_stress.h"
 #include "soil_kernels.h"
 #include "soil_models.h"
 #include "sph_soil_pair_term.h"
@@ -46,7 +47,9 @@ template <int DIMENSION> constexpr int stress_component_count() { return DIMENSI
 /* ---------------------------------------------------------------------- */
 
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
-    Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1), free_slip(false),
+    Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1),
+    artificial_stress_epsilon(SPHSoil::ARTIFICIAL_STRESS_EPSILON), has_artificial_stress(false),
+    nmax_artificial(0), artificial(nullptr), free_slip(false),
     kernel(SPHSoil::KernelKind::cubic),
     sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), warned_density(false),
     warned_spacing(false), warned_coinciding(false), nmax_packed(0),
@@ -70,6 +73,7 @@ PairSPHSoil::~PairSPHSoil()
 {
   memory->destroy(packed);
   memory->destroy(sums);
+  memory->destroy(artificial);
   memory->destroy(extrapolation_sums);
   memory->destroy(extrapolated_state);
   if (allocated) {
@@ -96,12 +100,14 @@ void PairSPHSoil::allocate()
 
 /* ----------------------------------------------------------------------
    pair_style sph/soil [alpha A] [beta B] [wall noslip|freeslip] [kernel cubic|wendland2]
+                       [artificial_stress epsilon]
 ------------------------------------------------------------------------- */
 
 void PairSPHSoil::settings(int narg, char **arg)
 {
   // a repeated pair_style command starts again from the defaults
   viscosity_alpha = viscosity_beta = 0.1;
+  artificial_stress_epsilon = SPHSoil::ARTIFICIAL_STRESS_EPSILON;
   free_slip = false;
   kernel = SPHSoil::KernelKind::cubic;
   for (int iarg = 0; iarg < narg; iarg += 2) {
@@ -113,6 +119,10 @@ void PairSPHSoil::settings(int narg, char **arg)
     } else if (strcmp(arg[iarg], "beta") == 0) {
       viscosity_beta = SphSoilInput::number(FLERR, lmp, "pair_style sph/soil beta", arg[iarg + 1],
                                             SphSoilInput::at_least(0.0));
+    } else if (strcmp(arg[iarg], "artificial_stress") == 0) {
+      artificial_stress_epsilon =
+          SphSoilInput::number(FLERR, lmp, "pair_style sph/soil artificial_stress", arg[iarg + 1],
+                               SphSoilInput::between(0.0, 1.0, false, false));
     } else if (strcmp(arg[iarg], "wall") == 0) {
       if (strcmp(arg[iarg + 1], "noslip") == 0) free_slip = false;
       else if (strcmp(arg[iarg + 1], "freeslip") == 0) free_slip = true;
@@ -131,7 +141,7 @@ void PairSPHSoil::settings(int narg, char **arg)
                    SPHSoil::KERNEL_NAMES);
     } else {
       error->all(FLERR, "Illegal pair_style sph/soil keyword {} (allowed: alpha, beta, wall, "
-                        "kernel)", arg[iarg]);
+                        "kernel, artificial_stress)", arg[iarg]);
     }
   }
 }
@@ -297,6 +307,17 @@ void PairSPHSoil::init_style()
     type_wall_friction[t] = m.friction;
   }
   check_particles();
+
+  // the artificial stress, for soils that can carry tension
+  type_artificial_stress.assign(atom->ntypes + 1, 0);
+  has_artificial_stress = false;
+  for (int t = 1; t <= atom->ntypes; t++) {
+    const SPHSoil::ConstitutiveModel *soil = materials[t].model.get();
+    if (soil && soil->tensile_strength() > 0.0 && artificial_stress_epsilon > 0.0) {
+      type_artificial_stress[t] = 1;
+      has_artificial_stress = true;
+    }
+  }
 
   // extrapolated walls: the soil's body force (fix gravity) and the walls' acceleration
   // walls that turn: the fixes that may turn atoms' orientation (fix rigid and its variants,
@@ -500,7 +521,7 @@ void PairSPHSoil::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   if (walls_may_turn) comm->forward_comm_array(4, atom->mu);
   if (!warned_coinciding) warn_coinciding();
-  SPHSoil::with_kernel(kernel, Evaluate{this, domain->dimension});
+  SPHSoil::with_kernel(kernel, Evaluate{this, domain->dimension, has_artificial_stress});
 }
 
 /* ----------------------------------------------------------------------
@@ -539,6 +560,36 @@ void PairSPHSoil::pack_atoms()
     row[P_H] = h[i];
   }
   if (nall > 0) memset(sums, 0, sizeof(double) * SUMS * nall);
+}
+
+/* ----------------------------------------------------------------------
+   the artificial stress R of every owned and ghost atom (soil_artificial_stress.h), 0 for
+   the types without it, and 1 / w(d / h) for the pair's weight (see the header)
+------------------------------------------------------------------------- */
+
+template <int DIMENSION, class Kernel> void PairSPHSoil::pack_artificial_stress()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->nmax > nmax_artificial) {
+    nmax_artificial = atom->nmax;
+    memory->destroy(artificial);
+    memory->create(artificial, nmax_artificial * ARTIFICIAL, "pair:artificial");
+  }
+  double **stress = avec->stress;
+  const int *type = atom->type;
+  const double *rho = atom->rho, *rmass = atom->rmass, *h = avec->smoothing_length;
+  for (int i = 0; i < nall; i++) {
+    double *row = artificial + (size_t) i * ARTIFICIAL;
+    if (type_artificial_stress[type[i]]) {
+      SPHSoil::artificial_stress<DIMENSION>(stress[i], rho[i], artificial_stress_epsilon,
+                                            row + A_STRESS);
+    } else {
+      for (int k = 0; k < 6; k++) row[A_STRESS + k] = 0.0;
+    }
+    const double volume = rmass[i] / rho[i];
+    const double spacing = DIMENSION == 2 ? std::sqrt(volume) : std::cbrt(volume);
+    row[A_INVERSE_SHAPE] = 1.0 / Kernel::shape(spacing / h[i]);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -691,7 +742,7 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
    communication (the atom style carries drho, strain rate and spin back)
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
+template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS> void PairSPHSoil::eval()
 {
   using SPHSoil::PairPartner;
   using SPHSoil::pair_density_rate;
@@ -708,6 +759,8 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
 
   pack_atoms();    // (re)allocates the packed rows: take their addresses after it
   if (has_extrapolated_walls) extrapolate_to_walls<DIMENSION, Kernel>();
+  if (ARTIFICIAL_STRESS) pack_artificial_stress<DIMENSION, Kernel>();
+  const int *const artificial_type = type_artificial_stress.data();
   const double *const in = packed;
   double *const out = sums;
   constexpr int DRHO = S_DRHO<DIMENSION>();
@@ -779,6 +832,17 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::eval()
         for (int m = 0; m < NSTRESS; m++) {
           const int k = STRESS_COMPONENTS[m];
           partner.stress_sum[k] = si[k] + sj[k];
+        }
+        if (ARTIFICIAL_STRESS && (artificial_type[itype] || artificial_type[jtype])) {
+          // (R_i + R_j) (W(r) / W(spacing))^4
+          const double *ai = artificial + (size_t) i * ARTIFICIAL;
+          const double *aj = artificial + (size_t) j * ARTIFICIAL;
+          const double weight = SPHSoil::artificial_stress_weight(
+              Kernel::shape(r * inv_h) * 0.5 * (ai[A_INVERSE_SHAPE] + aj[A_INVERSE_SHAPE]));
+          for (int m = 0; m < NSTRESS; m++) {
+            const int k = STRESS_COMPONENTS[m];
+            partner.stress_sum[k] += weight * (ai[A_STRESS + k] + aj[A_STRESS + k]);
+          }
         }
         partner.mean_density = 0.5 * (rhoi + pj[P_RHO]);
         const double mj = pj[P_MASS];
@@ -956,7 +1020,11 @@ void PairSPHSoil::unpack_forward_comm(int n, int first, double *buf)
     for (int c = 0; c < WSTATE; c++) extrapolated_state[(size_t) i * WSTATE + c] = buf[m++];
 }
 
-template void PairSPHSoil::eval<2, SPHSoil::CubicSpline>();
-template void PairSPHSoil::eval<3, SPHSoil::CubicSpline>();
-template void PairSPHSoil::eval<2, SPHSoil::WendlandC2>();
-template void PairSPHSoil::eval<3, SPHSoil::WendlandC2>();
+template void PairSPHSoil::eval<2, SPHSoil::CubicSpline, false>();
+template void PairSPHSoil::eval<3, SPHSoil::CubicSpline, false>();
+template void PairSPHSoil::eval<2, SPHSoil::WendlandC2, false>();
+template void PairSPHSoil::eval<3, SPHSoil::WendlandC2, false>();
+template void PairSPHSoil::eval<2, SPHSoil::CubicSpline, true>();
+template void PairSPHSoil::eval<3, SPHSoil::CubicSpline, true>();
+template void PairSPHSoil::eval<2, SPHSoil::WendlandC2, true>();
+template void PairSPHSoil::eval<3, SPHSoil::WendlandC2, true>();

@@ -47,9 +47,24 @@ class PairSPHSoil : public Pair {
   const SPHSoil::ConstitutiveModel *model(int type) const { return materials[type].model.get(); }
   double max_wave_speed() const;
   SPHSoil::KernelKind kernel_kind() const { return kernel; }
+  // whether the pair loop adds the artificial stress (known after init)
+  bool artificial_stress_active() const { return has_artificial_stress; }
 
  protected:
   double viscosity_alpha, viscosity_beta;    // Monaghan artificial viscosity
+  // Gray, Monaghan & Swift's artificial stress (doc/theory.rst 2.3): its epsilon, for the
+  // types whose soil can carry tension (type_artificial_stress: tensile strength > 0)
+  double artificial_stress_epsilon;
+  std::vector<int> type_artificial_stress;
+  bool has_artificial_stress;
+  // per owned and ghost atom: R (Voigt, the units of stress / rho^2) and 1 / w(d / h), w the
+  // kernel's shape and d = (m / rho)^(1/D) the spacing: the pair's weight is
+  // (W(r) / W(d))^4 = (w(r / h_ij) / w(d / h))^4, exact for two particles of the same d / h
+  // (which refinement keeps), with the mean of their 1 / w(d / h) otherwise
+  enum { A_STRESS = 0, A_INVERSE_SHAPE = 6, ARTIFICIAL = 7 };
+  int nmax_artificial;
+  double *artificial;
+  template <int DIMENSION, class Kernel> void pack_artificial_stress();
   bool free_slip;    // the slip of walls without their own (pair_style ... wall freeslip)
   SPHSoil::KernelKind kernel;                      // the pair loop is compiled once per kernel
   std::vector<SPHSoil::SoilMaterial> materials;    // per atom type, index 1..ntypes
@@ -104,20 +119,27 @@ class PairSPHSoil : public Pair {
   void allocate();
   void set_type_material(int type, const SPHSoil::SoilMaterial &material);
   void read_material_file(const char *file, std::vector<SPHSoil::SoilMaterial> &list);
-  template <int DIMENSION, class Kernel> void eval();
+  template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS> void eval();
   template <int DIMENSION>
   void mirror_wall_pair(int soil, int wall, double sign, const double dx[3], double r2, double hij,
                         double factor, double c_ij);
   template <int DIMENSION>
   static void add_velocity_gradient(double *row, double weight, const double t[3][3]);
-  // with_kernel() calls it with the kernel type: picks the dimension
+  // with_kernel() calls it with the kernel type: picks the dimension and whether the loop
+  // adds the artificial stress (compiled apart, so that the loop without it stays as lean)
   struct Evaluate {
     PairSPHSoil *pair;
     int dimension;
+    bool artificial_stress;
     template <class Kernel> void operator()() const
     {
-      if (dimension == 2) pair->eval<2, Kernel>();
-      else pair->eval<3, Kernel>();
+      if (artificial_stress) {
+        if (dimension == 2) pair->eval<2, Kernel, true>();
+        else pair->eval<3, Kernel, true>();
+      } else {
+        if (dimension == 2) pair->eval<2, Kernel, false>();
+        else pair->eval<3, Kernel, false>();
+      }
     }
   };
 };

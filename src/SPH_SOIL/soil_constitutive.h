@@ -136,6 +136,10 @@ class ConstitutiveModel {
 
   // P-wave modulus K + 4G/3 (Pa)
   virtual double p_wave_modulus() const = 0;
+  // the largest mean stress I1/3 the model admits (Pa): 0 for a soil without cohesion,
+  // infinity for one without a limit (phi = 0); > 0 means the soil can be in tension, where
+  // SPH needs the artificial stress (pair_style sph/soil)
+  virtual double tensile_strength() const = 0;
 
   // elastic P-wave speed sqrt((K + 4G/3)/rho0), for the time step and artificial viscosity
   double wave_speed(double reference_density) const

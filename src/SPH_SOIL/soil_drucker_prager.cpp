@@ -5,7 +5,9 @@
 
 #include "soil_drucker_prager.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 using namespace SPHSoil;
@@ -16,6 +18,31 @@ namespace {
 double flow_beta(double dilatancy_angle)
 {
   return 3.0 * std::sin(dilatancy_angle * DEG2RAD);
+}
+
+// alpha_phi and k_c of the plane-strain fit (see the header)
+void cone(const DruckerPragerParameters &p, double &alpha, double &kc)
+{
+  const double phi = p.friction_angle * DEG2RAD;
+  if (p.fit == DruckerPragerFit::associated) {
+    const double tan_phi = std::tan(phi);
+    const double root = std::sqrt(9.0 + 12.0 * tan_phi * tan_phi);
+    alpha = tan_phi / root;
+    kc = 3.0 * p.cohesion / root;
+  } else {
+    // nonassociated is the exact fit of psi = 0; for psi = 0 both lines below reduce to
+    // sin(phi)/3 and c cos(phi) in floating point too (root = 1, beta = 0)
+    const double beta = p.fit == DruckerPragerFit::exact ? flow_beta(p.dilatancy_angle) : 0.0;
+    const double root = std::sqrt(1.0 - 3.0 * beta * beta);
+    alpha = std::sin(phi) / (3.0 * (root + beta * std::sin(phi)));
+    kc = p.cohesion * std::cos(phi) * (1.0 - 3.0 * alpha * beta) / root;
+  }
+}
+
+// the apex's mean stress k_c / (3 alpha_phi): infinite for phi = 0
+double apex_mean_stress(double alpha, double kc)
+{
+  return alpha > 0.0 ? kc / (3.0 * alpha) : std::numeric_limits<double>::infinity();
 }
 
 }    // namespace
@@ -29,6 +56,8 @@ std::string DruckerPrager::check(const DruckerPragerParameters &p)
 {
   const std::string problem = p.check();
   if (!problem.empty()) return problem;
+  if (!(p.tension >= 0.0))
+    return "tension = " + format_number(p.tension) + ": the tensile strength must be >= 0 Pa";
   const double beta = flow_beta(p.dilatancy_angle);
   if (p.fit == DruckerPragerFit::exact && !(3.0 * beta * beta < 1.0))
     return "fit exact: no plane-strain fit is exact for dilatancy angle psi = " +
@@ -36,6 +65,15 @@ std::string DruckerPrager::check(const DruckerPragerParameters &p)
         "allows plastic flow in plane strain only for psi in [0, " +
         format_number(largest_exact_dilatancy()) + ") degrees; choose 'fit associated' or 'fit " +
         "nonassociated'";
+  if (p.tension < std::numeric_limits<double>::infinity()) {
+    double alpha, kc;
+    cone(p, alpha, kc);
+    const double apex = apex_mean_stress(alpha, kc);
+    if (p.tension > apex)
+      return "tension = " + format_number(p.tension) + ": the tensile strength must be in [0, " +
+          format_number(apex) + "] Pa, the mean stress at the apex of the cone k_c / (3 alpha_phi)" +
+          " of this phi and c (the apex limits the tension already)";
+  }
   return "";
 }
 
@@ -46,17 +84,24 @@ std::unique_ptr<ConstitutiveModel> DruckerPrager::create(const std::vector<std::
   std::vector<std::string> options;
   if (!FrictionalParameters::from_words(KEYWORD, words, parameters, options, error)) return nullptr;
   for (size_t k = 0; k < options.size(); k += 2) {
-    if (options[k] != "fit") {
-      error = std::string(KEYWORD) + ": unknown option '" + options[k] + "' (allowed: fit)";
-      return nullptr;
-    }
     const std::string value = k + 1 < options.size() ? options[k + 1] : "";
-    if (value == "exact") parameters.fit = DruckerPragerFit::exact;
-    else if (value == "associated") parameters.fit = DruckerPragerFit::associated;
-    else if (value == "nonassociated") parameters.fit = DruckerPragerFit::nonassociated;
-    else {
-      error = std::string(KEYWORD) + " fit '" + value +
-          "': must be exact, associated or nonassociated";
+    if (options[k] == "fit") {
+      if (value == "exact") parameters.fit = DruckerPragerFit::exact;
+      else if (value == "associated") parameters.fit = DruckerPragerFit::associated;
+      else if (value == "nonassociated") parameters.fit = DruckerPragerFit::nonassociated;
+      else {
+        error = std::string(KEYWORD) + " fit '" + value +
+            "': must be exact, associated or nonassociated";
+        return nullptr;
+      }
+    } else if (options[k] == "tension") {
+      if (!parse_finite_number(value, parameters.tension)) {
+        error = std::string(KEYWORD) + " tension '" + value +
+            "': the tensile strength must be a number (Pa), >= 0";
+        return nullptr;
+      }
+    } else {
+      error = std::string(KEYWORD) + ": unknown option '" + options[k] + "' (allowed: fit, tension)";
       return nullptr;
     }
   }
@@ -78,22 +123,9 @@ DruckerPrager::DruckerPrager(const DruckerPragerParameters &parameters) : params
   bulk = params.bulk_modulus;
   shear = params.shear_modulus();
 
-  // plane-strain match of Drucker-Prager to Mohr-Coulomb (see the header)
-  const double phi = params.friction_angle * DEG2RAD;
-  if (params.fit == DruckerPragerFit::associated) {
-    const double tan_phi = std::tan(phi);
-    const double root = std::sqrt(9.0 + 12.0 * tan_phi * tan_phi);
-    alpha = tan_phi / root;
-    kc = 3.0 * params.cohesion / root;
-  } else {
-    // nonassociated is the exact fit of psi = 0; for psi = 0 both lines below reduce to
-    // sin(phi)/3 and c cos(phi) in floating point too (root = 1, beta = 0)
-    const double beta =
-        params.fit == DruckerPragerFit::exact ? flow_beta(params.dilatancy_angle) : 0.0;
-    const double root = std::sqrt(1.0 - 3.0 * beta * beta);
-    alpha = std::sin(phi) / (3.0 * (root + beta * std::sin(phi)));
-    kc = params.cohesion * std::cos(phi) * (1.0 - 3.0 * alpha * beta) / root;
-  }
+  // plane-strain match of Drucker-Prager to Mohr-Coulomb (see the header); the tension cut-off
+  cone(params, alpha, kc);
+  largest_i1 = 3.0 * std::min(params.tension, apex_mean_stress(alpha, kc));
 
   const double sin_psi = std::sin(params.dilatancy_angle * DEG2RAD);
   flow_volumetric = 9.0 * bulk * sin_psi;
@@ -154,9 +186,9 @@ void DruckerPrager::stress_rate(const double stress[6], const double strain_rate
 
 /* ----------------------------------------------------------------------
    Bui 2008's return: (1) tension cracking, (2) radial scaling of the deviator.
-   For phi = 0 (alpha_phi = 0) the cracking rule -alpha I1 + k_c < 0 can never
-   fire (k_c >= 0) and k_c/alpha is undefined: the surface is the cylinder
-   sqrt(J2) = k_c = c with no tension cap, so only (2) acts.
+   (1) moves I1 back to the tension cut-off 3T, at most the apex k_c/alpha_phi
+   (Bui's rule), shear untouched. For phi = 0 without 'tension' there is no
+   cut-off: the surface is the cylinder sqrt(J2) = k_c = c, only (2) acts.
 ------------------------------------------------------------------------- */
 
 bool DruckerPrager::return_to_admissible(double stress[6]) const
@@ -164,9 +196,9 @@ bool DruckerPrager::return_to_admissible(double stress[6]) const
   bool changed = false;
   double i1 = first_invariant(stress);
 
-  // (1) tension cracking: move I1 back to the apex k_c/alpha, shear untouched
-  if (alpha > 0.0 && kc - alpha * i1 < 0.0) {
-    const double shift = (i1 - kc / alpha) / 3.0;
+  // (1) tension cracking: move I1 back to the cut-off, shear untouched
+  if (i1 > largest_i1) {
+    const double shift = (i1 - largest_i1) / 3.0;
     for (int k = 0; k < 3; k++) stress[k] -= shift;
     i1 = first_invariant(stress);
     changed = true;
@@ -195,7 +227,10 @@ bool DruckerPrager::return_to_admissible(double stress[6]) const
 
 double DruckerPrager::yield_function(const double stress[6]) const
 {
-  return sqrt_j2(stress) + alpha * first_invariant(stress) - kc;
+  const double i1 = first_invariant(stress);
+  const double shear_surface = sqrt_j2(stress) + alpha * i1 - kc;
+  // beyond a cut-off below the apex: the distance to it
+  return std::max(shear_surface, (i1 - largest_i1) / 3.0);
 }
 
 /* ----------------------------------------------------------------------
@@ -207,7 +242,10 @@ bool DruckerPrager::on_yield_surface(const double stress[6]) const
 {
   const double i1 = first_invariant(stress);
   const double root_j2 = sqrt_j2(stress);
-  return root_j2 + alpha * i1 - kc >= -YIELD_TOLERANCE * (root_j2 + alpha * std::fabs(i1) + kc);
+  const double scale = root_j2 + alpha * std::fabs(i1) + kc;
+  // on the cone, or cracked (at the tension cut-off)
+  return root_j2 + alpha * i1 - kc >= -YIELD_TOLERANCE * scale ||
+      i1 - largest_i1 >= -YIELD_TOLERANCE * (std::fabs(i1) + scale);
 }
 
 // out-of-class definitions: C++11/14 need them when the constants are bound to a reference

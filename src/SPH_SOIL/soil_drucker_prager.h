@@ -20,8 +20,14 @@
      nonassociated (exact for psi = 0): alpha_phi = sin(phi)/3, k_c = c cos(phi).
    phi = 0 gives a pressure-independent (von Mises-like) surface sqrt(J2) <= c
    with no tension cap (all fits agree there).
+   Tension cut-off (Bui 2008's tension cracking, generalized): the mean stress
+   I1/3 never exceeds the tensile strength T; by default T is the apex of the
+   cone, k_c / (3 alpha_phi) (c cot(phi) for psi = 0), and infinite for
+   phi = 0; 'tension T' sets a lower one, 0 <= T <= the apex (T = 0: soil
+   that carries no mean tension, a cohesive soil that cracks).
 
-   Material line: drucker_prager K nu phi psi c [fit exact|associated|nonassociated]
+   Material line:
+     drucker_prager K nu phi psi c [fit exact|associated|nonassociated] [tension T]
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SOIL_DRUCKER_PRAGER_H
@@ -29,6 +35,7 @@
 
 #include "soil_constitutive.h"
 
+#include <limits>
 #include <memory>
 
 namespace SPHSoil {
@@ -37,6 +44,8 @@ enum class DruckerPragerFit { exact, associated, nonassociated };
 
 struct DruckerPragerParameters : FrictionalParameters {
   DruckerPragerFit fit = DruckerPragerFit::exact;    // plane-strain fit to Mohr-Coulomb
+  // the tension cut-off: largest mean stress I1/3 (Pa); infinity: the cone's apex
+  double tension = std::numeric_limits<double>::infinity();
 
   DruckerPragerParameters() = default;
   DruckerPragerParameters(const FrictionalParameters &frictional,
@@ -49,7 +58,8 @@ struct DruckerPragerParameters : FrictionalParameters {
 class DruckerPrager final : public ConstitutiveModel {
  public:
   static constexpr const char *KEYWORD = "drucker_prager";
-  static constexpr const char *USAGE = "K nu phi psi c [fit exact|associated|nonassociated]";
+  static constexpr const char *USAGE =
+      "K nu phi psi c [fit exact|associated|nonassociated] [tension T]";
   // relative distance to the yield surface below which a stress counts as on it,
   // in units of sqrt(J2) + alpha_phi |I1| + k_c (see soil_drucker_prager.cpp)
   static constexpr double YIELD_TOLERANCE = 1.0e-10;
@@ -75,6 +85,7 @@ class DruckerPrager final : public ConstitutiveModel {
   double yield_function(const double stress[6]) const override;
   bool on_yield_surface(const double stress[6]) const override;
   double p_wave_modulus() const override { return p_modulus; }
+  double tensile_strength() const override { return largest_i1 / 3.0; }
 
   const DruckerPragerParameters &parameters() const { return params; }
   double bulk_modulus() const { return bulk; }
@@ -86,6 +97,7 @@ class DruckerPrager final : public ConstitutiveModel {
   DruckerPragerParameters params;
   double bulk, shear;          // K, G
   double alpha, kc;            // alpha_phi, k_c
+  double largest_i1;           // the tension cut-off: 3 T, at most the apex k_c / alpha_phi
   double flow_volumetric;      // 9 K sin(psi): volumetric part of the plastic stress rate
   double plastic_denominator;  // 27 alpha_phi K sin(psi) + G, > 0
   double p_modulus;            // K + 4G/3

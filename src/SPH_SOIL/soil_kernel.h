@@ -29,15 +29,19 @@ struct CubicSpline {
     return dimension == 3 ? 1.0 / (PI * h * h * h) : 10.0 / (7.0 * PI * h * h);
   }
 
+  // the kernel's shape: W(r, h) = norm(D, h) shape(r/h)
+  static inline double shape(double q)
+  {
+    if (q >= 2.0) return 0.0;
+    if (q < 1.0) return 1.0 - 1.5 * q * q + 0.75 * q * q * q;
+    const double t = 2.0 - q;
+    return 0.25 * t * t * t;
+  }
+
   // W(r, h)
   static inline double value(int dimension, double r, double h)
   {
-    const double q = r / h;
-    if (q >= 2.0) return 0.0;
-    const double c = norm(dimension, h);
-    if (q < 1.0) return c * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
-    const double t = 2.0 - q;
-    return c * 0.25 * t * t * t;
+    return norm(dimension, h) * shape(r / h);
   }
 
   // dW/dr (<= 0); the gradient is dW/dr * x/r.

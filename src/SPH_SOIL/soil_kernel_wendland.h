@@ -29,12 +29,17 @@ struct WendlandC2 {
     return dimension == 3 ? 21.0 / (16.0 * PI * h * h * h) : 7.0 / (4.0 * PI * h * h);
   }
 
-  static inline double value(int dimension, double r, double h)
+  // the kernel's shape: W(r, h) = norm(D, h) shape(r/h)
+  static inline double shape(double q)
   {
-    const double q = r / h;
     if (q >= 2.0) return 0.0;
     const double t = 1.0 - 0.5 * q, t2 = t * t;
-    return norm(dimension, h) * t2 * t2 * (2.0 * q + 1.0);
+    return t2 * t2 * (2.0 * q + 1.0);
+  }
+
+  static inline double value(int dimension, double r, double h)
+  {
+    return norm(dimension, h) * shape(r / h);
   }
 
   static inline double derivative(int dimension, double r, double h)

@@ -26,6 +26,8 @@
 
 #include "soil_constitutive.h"
 
+#include <limits>
+
 #include <memory>
 
 namespace SPHSoil {
@@ -52,6 +54,11 @@ class MohrCoulomb final : public ConstitutiveModel {
   double yield_function(const double stress[6]) const override;
   bool on_yield_surface(const double stress[6]) const override;
   double p_wave_modulus() const override { return bulk + 4.0 * shear / 3.0; }
+  // the apex c cot(phi); no limit for phi = 0 with c > 0
+  double tensile_strength() const override
+  {
+    return sin_phi > 0.0 || params.cohesion == 0.0 ? apex : std::numeric_limits<double>::infinity();
+  }
 
   const FrictionalParameters &parameters() const { return params; }
   double shear_modulus() const { return shear; }

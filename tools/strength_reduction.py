@@ -1,0 +1,123 @@
+#!/usr/bin/python3
+"""A factor of safety by strength reduction: the factor F by which c and tan(phi) must be divided
+for a slope (or any input) to fail, found by bisection over LAMMPS runs.
+
+The input takes the factor as the LAMMPS variable F (-var F value), divides its soil's strength by
+it (c_F = c / F, tan(phi_F) = tan(phi) / F, as examples/slope/in.slope does) and writes a
+monitored displacement against time to a file (--data; columns: time, displacement, ...). A run
+fails when the monitored point is still moving at the end: when it has moved more than --creep
+(default 0.1%) of --length over the last --late (default 30%) of the run. A slope that stands
+settles and stops, one that fails keeps moving (slowly near the critical F, which is why a fixed
+displacement at a fixed time is not the criterion). Starting from a bracket that stands at its low
+end and fails at its high end (both run to check), --steps bisections narrow it; the factor of
+safety is reported as the bracket's middle, +- half its width. Every run's late movement is in the
+JSON, so another threshold can be applied to the same runs. Prints JSON, writes --json and a plot
+(--plot) of the monitored displacement against time for every run.
+
+  tools/strength_reduction.py [--input examples/slope/in.slope] [--lmp build/lmp] [--np 2]
+                              [--var d 0.5] [--low 1.0] [--high 2.0] [--steps 4]
+                              [--data slope.dat] [--length 10] [--creep 0.001] [--late 0.3]
+                              [--reference 1.4] [--workdir /tmp/sph_soil_strength_reduction]
+                              [--json examples/slope/slope.json] [--plot examples/slope/slope.png]
+"""
+import argparse
+import json
+import os
+import subprocess
+import time
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def run(args, factor):
+    tag = ''.join(f'{name}{value}_' for name, value in args.var)
+    directory = os.path.join(args.workdir, f'{tag}F{factor:.4f}')
+    os.makedirs(directory, exist_ok=True)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
+    command = ['mpirun', '-np', str(args.np), args.lmp, '-in', os.path.abspath(args.input),
+               '-var', 'F', f'{factor:.6g}', '-log', 'log.lammps', '-screen', 'none']
+    for name, value in args.var:
+        command += ['-var', name, value]
+    start = time.time()
+    subprocess.run(command, cwd=directory, env=env, check=True)
+    seconds = time.time() - start
+    data = np.loadtxt(os.path.join(directory, args.data), comments='#')
+    t, moved = data[:, 1], data[:, 2]    # fix ave/time: step, then the values
+    late = t >= (1.0 - args.late) * t[-1]
+    movement = float(moved[late][-1] - moved[late][0])
+    return {'F': factor, 'moved_m': round(float(moved[-1]), 5), 'late_movement_m': round(movement, 5),
+            'fails': movement > args.creep * args.length, 'wall_seconds': round(seconds, 1),
+            'time': t.tolist(), 'moved': moved.tolist()}
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument('--input', default=os.path.join(ROOT, 'examples', 'slope', 'in.slope'))
+    p.add_argument('--lmp', default=os.path.join(ROOT, 'build', 'lmp'))
+    p.add_argument('--np', type=int, default=2)
+    p.add_argument('--var', nargs=2, action='append', default=[], metavar=('NAME', 'VALUE'),
+                   help='another LAMMPS variable for every run (e.g. --var d 0.25)')
+    p.add_argument('--low', type=float, default=1.0)
+    p.add_argument('--high', type=float, default=2.0)
+    p.add_argument('--steps', type=int, default=4)
+    p.add_argument('--data', default='slope.dat')
+    p.add_argument('--length', type=float, default=10.0, help='the length the creep threshold refers to (m)')
+    p.add_argument('--creep', type=float, default=0.001)
+    p.add_argument('--late', type=float, default=0.3)
+    p.add_argument('--reference', type=float, default=1.4,
+                   help='the published factor of safety (Griffiths & Lane 1999, example 1)')
+    p.add_argument('--workdir', default='/tmp/sph_soil_strength_reduction')
+    p.add_argument('--json', default=None)
+    p.add_argument('--plot', default=None)
+    args = p.parse_args()
+
+    runs = []
+    low, high = run(args, args.low), run(args, args.high)
+    runs += [low, high]
+    if low['fails'] or not high['fails']:
+        raise SystemExit(f'strength_reduction: the bracket [{args.low}, {args.high}] does not hold '
+                         f'(F = {args.low} fails: {low["fails"]}, F = {args.high} fails: {high["fails"]})')
+    lo, hi = args.low, args.high
+    for _ in range(args.steps):
+        middle = run(args, 0.5 * (lo + hi))
+        runs.append(middle)
+        if middle['fails']:
+            hi = middle['F']
+        else:
+            lo = middle['F']
+    factor = 0.5 * (lo + hi)
+    result = {
+        'input': os.path.relpath(os.path.abspath(args.input), ROOT), 'variables': dict(args.var),
+        'criterion': f'fails when the monitored displacement grows by more than {args.creep:g} x '
+                     f'{args.length:g} m over the last {100 * args.late:.0f}% of the run',
+        'factor_of_safety': round(factor, 4), 'uncertainty': round(0.5 * (hi - lo), 4),
+        'reference': args.reference, 'ratio_to_reference': round(factor / args.reference, 4),
+        'wall_seconds': round(sum(r['wall_seconds'] for r in runs), 1),
+        'runs': [{k: v for k, v in r.items() if k not in ('time', 'moved')} for r in sorted(runs, key=lambda r: r['F'])],
+    }
+    text = json.dumps(result, indent=2)
+    print(text)
+    if args.json:
+        with open(args.json, 'w') as f:
+            f.write(text + '\n')
+    if args.plot:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(7, 4.2))
+        for r in sorted(runs, key=lambda r: r['F']):
+            ax.plot(r['time'], np.array(r['moved']) * 1000.0, color='tab:red' if r['fails'] else 'tab:blue',
+                    label=f"F = {r['F']:.3f} ({'fails' if r['fails'] else 'stands'})")
+        ax.set_xlabel('time (s)')
+        ax.set_ylabel('monitored displacement (mm)')
+        ax.set_title(f'strength reduction: F = {factor:.3f} +- {0.5 * (hi - lo):.3f} '
+                     f'(reference {args.reference:g})')
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(args.plot, dpi=120)
+
+
+if __name__ == '__main__':
+    main()
