@@ -23,10 +23,10 @@ JSON, so another threshold can be applied to the same runs. Prints JSON, writes 
 import argparse
 import json
 import os
-import subprocess
-import time
 
 import numpy as np
+
+from bisect_failure import bisect, late_movement, run_lammps
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -34,19 +34,11 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 def run(args, factor):
     tag = ''.join(f'{name}{value}_' for name, value in args.var)
     directory = os.path.join(args.workdir, f'{tag}F{factor:.4f}')
-    os.makedirs(directory, exist_ok=True)
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
-    command = ['mpirun', '-np', str(args.np), args.lmp, '-in', os.path.abspath(args.input),
-               '-var', 'F', f'{factor:.6g}', '-log', 'log.lammps', '-screen', 'none']
-    for name, value in args.var:
-        command += ['-var', name, value]
-    start = time.time()
-    subprocess.run(command, cwd=directory, env=env, check=True)
-    seconds = time.time() - start
+    seconds = run_lammps(args.lmp, args.np, os.path.abspath(args.input), directory,
+                         [('F', f'{factor:.6g}')] + [tuple(v) for v in args.var])
     data = np.loadtxt(os.path.join(directory, args.data), comments='#')
     t, moved = data[:, 1], data[:, 2]    # fix ave/time: step, then the values
-    late = t >= (1.0 - args.late) * t[-1]
-    movement = float(moved[late][-1] - moved[late][0])
+    movement = late_movement(t, moved, args.late)
     return {'F': factor, 'moved_m': round(float(moved[-1]), 5), 'late_movement_m': round(movement, 5),
             'fails': movement > args.creep * args.length, 'wall_seconds': round(seconds, 1),
             'time': t.tolist(), 'moved': moved.tolist()}
@@ -73,20 +65,8 @@ def main():
     p.add_argument('--plot', default=None)
     args = p.parse_args()
 
-    runs = []
-    low, high = run(args, args.low), run(args, args.high)
-    runs += [low, high]
-    if low['fails'] or not high['fails']:
-        raise SystemExit(f'strength_reduction: the bracket [{args.low}, {args.high}] does not hold '
-                         f'(F = {args.low} fails: {low["fails"]}, F = {args.high} fails: {high["fails"]})')
-    lo, hi = args.low, args.high
-    for _ in range(args.steps):
-        middle = run(args, 0.5 * (lo + hi))
-        runs.append(middle)
-        if middle['fails']:
-            hi = middle['F']
-        else:
-            lo = middle['F']
+    runs, lo, hi = bisect(lambda factor: run(args, factor), args.low, args.high, args.steps,
+                          'strength_reduction')
     factor = 0.5 * (lo + hi)
     result = {
         'input': os.path.relpath(os.path.abspath(args.input), ROOT), 'variables': dict(args.var),

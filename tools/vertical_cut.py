@@ -22,10 +22,10 @@ import argparse
 import json
 import os
 import re
-import subprocess
-import time
 
 import numpy as np
+
+from bisect_failure import bisect, late_movement, run_lammps
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLE = os.path.join(ROOT, 'examples', 'vertical_cut', 'in.vertical_cut')
@@ -36,18 +36,12 @@ PASTOR = (3.772, 3.786)
 def run(args, ratio):
     tag = '_refined' if args.refine else ''
     directory = os.path.join(args.workdir, f'd{args.d:g}{tag}_ratio{ratio:.4f}')
-    os.makedirs(directory, exist_ok=True)
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
-    start = time.time()
-    subprocess.run(['mpirun', '-np', str(args.np), args.lmp, '-in', EXAMPLE, '-var', 'ratio', f'{ratio:.6g}',
-                    '-var', 'd', f'{args.d:g}', '-var', 'refine', '1' if args.refine else '0',
-                    '-log', 'log.lammps', '-screen', 'none'],
-                   cwd=directory, env=env, check=True)
-    seconds = time.time() - start
+    seconds = run_lammps(args.lmp, args.np, EXAMPLE, directory,
+                         [('ratio', f'{ratio:.6g}'), ('d', f'{args.d:g}'),
+                          ('refine', '1' if args.refine else '0')])
     data = np.loadtxt(os.path.join(directory, 'cut.dat'), comments='#')
     moved = float(data[-1, 2])
-    late = data[:, 1] >= 0.7 * data[-1, 1]
-    creep = float(data[late, 2][-1] - data[late, 2][0])
+    creep = late_movement(data[:, 1], data[:, 2])
     text = open(os.path.join(directory, 'log.lammps')).read()
     if not re.search(r'vertical cut: gamma H / c = .*: the crest moved', text):
         raise SystemExit(f'vertical_cut: the run in {directory} did not finish')
@@ -72,19 +66,8 @@ def main():
     p.add_argument('--json')
     p.add_argument('--plot')
     args = p.parse_args()
-    runs = [run(args, args.low), run(args, args.high)]
-    if runs[0]['fails'] or not runs[1]['fails']:
-        raise SystemExit(f'vertical_cut: [{args.low}, {args.high}] is not a bracket: '
-                         f'{[(r["ratio"], r["crest_moved_m"]) for r in runs]}')
-    low, high = args.low, args.high
-    for _ in range(args.steps):
-        middle = 0.5 * (low + high)
-        r = run(args, middle)
-        runs.append(r)
-        if r['fails']:
-            high = middle
-        else:
-            low = middle
+    runs, low, high = bisect(lambda ratio: run(args, ratio), args.low, args.high, args.steps,
+                             'vertical_cut')
     critical = 0.5 * (low + high)
     summary = {'spacing_m': args.d, 'refined': args.refine, 'late_creep_threshold_over_H': args.creep,
                'stands_up_to': low, 'fails_from': high, 'critical_ratio': critical,

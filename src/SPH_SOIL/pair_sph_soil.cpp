@@ -18,6 +18,7 @@
 #include "soil_artificial_stress.h"
 #include "soil_kernels.h"
 #include "soil_models.h"
+#include "soil_split.h"
 #include "sph_soil_pair_term.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_input.h"
@@ -410,7 +411,7 @@ void PairSPHSoil::check_particles()
   }
   if (!warned_spacing) {
     const double dimension = domain->dimension;
-    auto ratio = [&](int i) { return h[i] / std::pow(rmass[i] / rho[i], 1.0 / dimension); };
+    auto ratio = [&](int i) { return h[i] / SPHSoil::volume_spacing(rmass[i] / rho[i], dimension); };
     const auto off = find_offenders(
         lmp,
         [&](int i) {
@@ -586,8 +587,7 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::pack_artificial_stress(
     } else {
       for (int k = 0; k < 6; k++) row[A_STRESS + k] = 0.0;
     }
-    const double volume = rmass[i] / rho[i];
-    const double spacing = DIMENSION == 2 ? std::sqrt(volume) : std::cbrt(volume);
+    const double spacing = SPHSoil::volume_spacing(rmass[i] / rho[i], DIMENSION);
     row[A_INVERSE_SHAPE] = 1.0 / Kernel::shape(spacing / h[i]);
   }
 }

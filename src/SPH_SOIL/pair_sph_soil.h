@@ -52,7 +52,7 @@ class PairSPHSoil : public Pair {
 
  protected:
   double viscosity_alpha, viscosity_beta;    // Monaghan artificial viscosity
-  // Gray, Monaghan & Swift's artificial stress (doc/theory.rst 2.3): its epsilon, for the
+  // Gray, Monaghan & Swift's artificial stress (doc/theory.rst 2.5): its epsilon, for the
   // types whose soil can carry tension (type_artificial_stress: tensile strength > 0)
   double artificial_stress_epsilon;
   std::vector<int> type_artificial_stress;
@@ -60,7 +60,7 @@ class PairSPHSoil : public Pair {
   // per owned and ghost atom: R (Voigt, the units of stress / rho^2) and 1 / w(d / h), w the
   // kernel's shape and d = (m / rho)^(1/D) the spacing: the pair's weight is
   // (W(r) / W(d))^4 = (w(r / h_ij) / w(d / h))^4, exact for two particles of the same d / h
-  // (which refinement keeps), with the mean of their 1 / w(d / h) otherwise
+  // (parents and daughters of smoothing ratio 1/2), with the mean of their 1 / w(d / h) otherwise
   enum { A_STRESS = 0, A_INVERSE_SHAPE = 6, ARTIFICIAL = 7 };
   int nmax_artificial;
   double *artificial;

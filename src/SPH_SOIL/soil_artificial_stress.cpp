@@ -4,8 +4,6 @@
 
 #include "soil_artificial_stress.h"
 
-#include "soil_constitutive.h"
-
 void SPHSoil::artificial_stress(const double stress[6], double density, double epsilon, double R[6])
 {
   for (int k = 0; k < 6; k++) R[k] = 0.0;

@@ -6,8 +6,9 @@
      R'_i = -epsilon sigma'_i / rho^2   for a principal stress sigma'_i > 0 (tension),
      R'_i = 0                           otherwise,
    R = Q diag(R') Q^T; a pair adds (R_a + R_b) f_ab^n to the stress sum of its momentum term,
-   with f_ab = W(r_ab) / W(d), d the initial particle spacing: a term that grows as two
-   particles under tension come closer than d, and keeps them apart (no clumping). Symmetric
+   with f_ab = W(r_ab) / W(d), d the particle spacing (pair_style sph/soil: each particle's
+   (m / rho)^(1/D)): a term that grows as two particles under tension come closer than d, and
+   keeps them apart (no clumping). Symmetric
    in a and b, so that the pair's forces stay equal and opposite. Gray 2001: epsilon = 0.3,
    n = 4. pair_style sph/soil adds it for the soils that can carry tension (c > 0).
 ------------------------------------------------------------------------- */
@@ -15,7 +16,7 @@
 #ifndef LMP_SOIL_ARTIFICIAL_STRESS_H
 #define LMP_SOIL_ARTIFICIAL_STRESS_H
 
-#include <cmath>
+#include "soil_constitutive.h"
 
 namespace SPHSoil {
 
@@ -37,10 +38,9 @@ inline void artificial_stress(const double stress[6], double density, double eps
     return;
   }
   const double scale = -epsilon / (density * density);
-  const double mean = 0.5 * (stress[0] + stress[1]);
-  const double half = 0.5 * (stress[0] - stress[1]);
-  const double radius = std::sqrt(half * half + stress[3] * stress[3]);
-  const double s1 = mean + radius, s2 = mean - radius;
+  double center, radius;
+  mohr_circle(stress, center, radius);
+  const double s1 = center + radius, s2 = center - radius;
   const double r1 = s1 > 0.0 ? scale * s1 : 0.0, r2 = s2 > 0.0 ? scale * s2 : 0.0;
   // R_inplane = r2 I + (r1 - r2) P_1, P_1 = (S - s_2 I) / (2 radius); equal principal
   // stresses (radius 0) have r1 = r2

@@ -173,10 +173,9 @@ void jacobi_eigen(const double stress[6], double values[3], double vectors[3][3]
 void SPHSoil::principal_stresses(const double stress[6], double values[3], double vectors[3][3])
 {
   if (stress[4] == 0.0 && stress[5] == 0.0) {
-    const double center = 0.5 * (stress[0] + stress[1]);
-    const double half_difference = 0.5 * (stress[0] - stress[1]);
-    const double radius = std::sqrt(half_difference * half_difference + stress[3] * stress[3]);
-    const double angle = 0.5 * std::atan2(stress[3], half_difference);
+    double center, radius;
+    mohr_circle(stress, center, radius);
+    const double angle = 0.5 * std::atan2(stress[3], 0.5 * (stress[0] - stress[1]));
     const double c = std::cos(angle), s = std::sin(angle);
     values[0] = center + radius;
     values[1] = center - radius;

@@ -194,6 +194,15 @@ std::string format_number(double value);
 // a whole word as a finite number (the words of material lines); false if it is not one
 bool parse_finite_number(const std::string &word, double &value);
 
+// the in-plane principal stresses of a plane-strain stress (xz = yz = 0) as Mohr's circle:
+// its centre (sxx + syy)/2 and radius sqrt(((sxx - syy)/2)^2 + sxy^2)
+inline void mohr_circle(const double stress[6], double &center, double &radius)
+{
+  const double half_difference = 0.5 * (stress[0] - stress[1]);
+  center = 0.5 * (stress[0] + stress[1]);
+  radius = std::sqrt(half_difference * half_difference + stress[3] * stress[3]);
+}
+
 // eigenvalues (descending) and unit eigenvectors (vectors[k] belongs to values[k]) of a
 // symmetric tensor in Voigt order; with xz = yz = 0 (plane strain) in closed form, z an
 // eigenvector exactly; else by Jacobi rotations

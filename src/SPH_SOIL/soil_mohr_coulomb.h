@@ -27,7 +27,6 @@
 #include "soil_constitutive.h"
 
 #include <limits>
-
 #include <memory>
 
 namespace SPHSoil {

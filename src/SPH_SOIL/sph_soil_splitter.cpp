@@ -86,8 +86,7 @@ double SPHSoilSplitter::spacing(int i) const
 {
   if (reference_spacing > 0.0) return level_spacing(reference_spacing, avec->level[i]);
   const double density = pair->material(atom->type[i]).density;
-  const double volume = atom->rmass[i] / density;
-  return domain->dimension == 3 ? std::cbrt(volume) : std::sqrt(volume);
+  return volume_spacing(atom->rmass[i] / density, domain->dimension);
 }
 
 /* ----------------------------------------------------------------------
