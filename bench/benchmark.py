@@ -34,7 +34,9 @@ def run(lmp, infile, workdir, np=1, extra=()):
     text = open(log).read()
     loop = re.findall(r'Loop time of (\S+) on (\d+) procs for (\d+) steps with (\d+) atoms', text)[-1]
     seconds, procs, steps, atoms = float(loop[0]), int(loop[1]), int(loop[2]), int(loop[3])
-    neighs = re.findall(r'Ave neighs/atom = (\S+)', text)
+    # sph/soil builds its own list and prints its mean (LAMMPS's count is 0 for it)
+    neighs = (re.findall(r'^SPH_SOIL neighbours per atom: (\S+)', text, re.M) or
+              re.findall(r'Ave neighs/atom = (\S+)', text))
     pair = re.findall(r'^Pair\s+\|\s+\S+\s+\|\s+(\S+)', text, re.M)
     return {'seconds': seconds, 'procs': procs, 'steps': steps, 'atoms': atoms,
             'particle_steps_per_second_per_core': atoms * steps / seconds / procs,

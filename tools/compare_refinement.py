@@ -4,6 +4,8 @@
 Reads examples/refinement/{log,dump}.<problem>_<run>.* written by tools/run_refinement.sh and,
 for each run, reports
   - wall_seconds: the sum of the run segments' loop times (LAMMPS "Loop time of ...");
+  - wall_us_per_particle_step: wall_seconds over the particle-steps (walls included; the atoms
+    of the thermo rows times the steps between them), in microseconds on all ranks together;
   - peak_particles, final_particles: from the thermo output (walls included, same in every run);
   - surface_rms_vs_fine_m: RMS difference of the final free surface from the fine run's, over
     x in [0, the fine run's runout], the surface being the 0.5 level of the SPH volume fraction
@@ -43,16 +45,23 @@ PROBLEMS = {
     'collapse': dict(d=0.04, height=2.0, times=(0.25, 0.45, 1.8), title='Soil collapse (doc/theory.rst 6.2)',
                      experiment=None),
 }
-RUNS = [('coarse', 'coarse'), ('fine', 'fine (static 0.5, 0.5)'),
-        ('dynamic_0.5_0.5', 'dynamic (0.5, 0.5)'), ('dynamic_0.55_0.5', 'dynamic (0.55, 0.5)'),
-        ('dynamic_0.55_0.6', 'dynamic (0.55, 0.6)'), ('dynamic_0.55_0.7', 'dynamic (0.55, 0.7)')]
+# the paper's four (separation, smoothing) pairs, each also with the artificial viscosity that
+# follows the level (pair_style sph/soil viscosity_h0: every level dissipates as the coarse one)
+PAIRS = [('0.5', '0.5'), ('0.55', '0.5'), ('0.55', '0.6'), ('0.55', '0.7')]
+RUNS = ([('coarse', 'coarse'), ('fine', 'fine (static 0.5, 0.5)')] +
+        [(f'dynamic_{e}_{a}', f'dynamic ({e}, {a})') for e, a in PAIRS] +
+        [(f'dynamic_{e}_{a}_h0', f'dynamic ({e}, {a}), viscosity_h0') for e, a in PAIRS])
 
 
 def read_log(path):
-    """Sum of loop times, the Atoms column of every thermo table, and whether it ended cleanly."""
+    """Sum of loop times, the Atoms column of every thermo table, the particle-steps (atoms
+    integrated over the steps between thermo rows, each interval at its end's count), and
+    whether it ended cleanly."""
     text = open(path).read()
     loop = sum(float(t) for t in re.findall(r'Loop time of ([0-9.eE+-]+) on', text))
     atoms = []
+    particle_steps = 0.0
+    last_step = None
     header = None
     for line in text.splitlines():
         words = line.split()
@@ -61,13 +70,19 @@ def read_log(path):
             continue
         if header and len(words) == len(header):
             try:
-                atoms.append(int(float(words[header.index('Atoms')])))
+                n = int(float(words[header.index('Atoms')]))
+                step = int(float(words[header.index('Step')]))
             except ValueError:
                 header = None
+                continue
+            atoms.append(n)
+            if last_step is not None and step > last_step:
+                particle_steps += n * (step - last_step)
+            last_step = step
         else:
             header = None
     error = re.search(r'^ERROR.*$', text, re.M)
-    return loop, atoms, error.group(0) if error else None
+    return loop, atoms, particle_steps, error.group(0) if error else None
 
 
 def smoothing_ratio(key):
@@ -107,9 +122,11 @@ def analyse(directory, problem, root):
         dump = os.path.join(directory, f'dump.{name}.final')
         if not os.path.exists(log):
             continue
-        loop, atoms, error = read_log(log)
+        loop, atoms, particle_steps, error = read_log(log)
         entry = dict(run=label, wall_seconds=round(loop, 1), peak_particles=max(atoms) if atoms else None,
-                     final_particles=atoms[-1] if atoms else None, error=error)
+                     final_particles=atoms[-1] if atoms else None, particle_steps=particle_steps,
+                     wall_us_per_particle_step=1e6 * loop / particle_steps if particle_steps else None,
+                     error=error)
         if error or not os.path.exists(dump):
             entry['completed'] = False
             results[key] = entry
@@ -199,7 +216,8 @@ def surface_figure(problem, profiles, root, out):
 
 
 def table(problem, results):
-    cols = [('run', 'run', '{}'), ('wall_seconds', 'wall (s)', '{:.0f}'), ('peak_particles', 'peak N', '{}'),
+    cols = [('run', 'run', '{}'), ('wall_seconds', 'wall (s)', '{:.0f}'),
+            ('wall_us_per_particle_step', 'us/particle-step', '{:.3f}'), ('peak_particles', 'peak N', '{}'),
             ('final_particles', 'final N', '{}'), ('surface_rms_vs_fine_m', 'RMS vs fine (mm)', '{:.2f}'),
             ('surface_rms_vs_experiment_m', 'RMS vs exp. (mm)', '{:.2f}'),
             ('runout_m', 'runout (m)', '{:.3f}'), ('failure_angle_deg', 'failure angle', '{:.1f}'),

@@ -15,19 +15,23 @@ problems=("$@")
 [ ${#problems[@]} -gt 0 ] || problems=(bars collapse)
 cd "$root/examples/refinement"
 for problem in "${problems[@]}"; do
-  runs=("coarse" "fine" "dynamic 0.5 0.5" "dynamic 0.55 0.5" "dynamic 0.55 0.6" "dynamic 0.55 0.7")
+  # the paper's four pairs, each also with the viscosity that follows the level (h0)
+  runs=("coarse" "fine")
+  for pair in "0.5 0.5" "0.55 0.5" "0.55 0.6" "0.55 0.7"; do runs+=("dynamic $pair 0"); done
+  for pair in "0.5 0.5" "0.55 0.5" "0.55 0.6" "0.55 0.7"; do runs+=("dynamic $pair 1"); done
   for run in "${runs[@]}"; do
     set -- $run
-    mode=$1 eps=${2:-0.5} alpha=${3:-0.5}
+    mode=$1 eps=${2:-0.5} alpha=${3:-0.5} h0=${4:-0}
     name=${problem}_${mode}
     [ "$mode" = dynamic ] && name=${problem}_dynamic_${eps}_${alpha}
+    [ "$h0" = 1 ] && name=${name}_h0
     if [ -f "dump.$name.final" ] && [ "dump.$name.final" -nt in.refinement ] && [ "dump.$name.final" -nt "$build/lmp" ]; then
       echo "== $name: up to date"; continue
     fi
     echo "== $name"
     rm -f frame_${name}_*.png
     mpirun -np "$np" "$build/lmp" -in in.refinement -var problem "$problem" -var mode "$mode" \
-      -var eps "$eps" -var alpha "$alpha" -log "log.$name" -screen none \
+      -var eps "$eps" -var alpha "$alpha" -var h0 "$h0" -log "log.$name" -screen none \
       || echo "== $name stopped with an error (see log.$name)"
   done
 done

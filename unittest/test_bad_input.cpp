@@ -135,7 +135,10 @@ std::vector<BadInput> cases()
 
   // ---- pair_style sph/soil
   error("PairUnknownKeyword", "patch", {}, "pair_style sph/soil gamma 1",
-        "Illegal pair_style sph/soil keyword gamma (allowed: alpha, beta, wall, kernel, artificial_stress)");
+        "Illegal pair_style sph/soil keyword gamma (allowed: alpha, beta, viscosity_h0, wall, kernel, "
+        "artificial_stress)");
+  error("PairViscosityH0Negative", "patch", {}, "pair_style sph/soil viscosity_h0 -0.001",
+        "Illegal pair_style sph/soil viscosity_h0 -0.001: must be >= 0");
   error("PairKernel", "patch", {}, "pair_style sph/soil kernel gaussian",
         "Illegal pair_style sph/soil kernel gaussian: must be one of cubic, wendland2");
   error("PairKeywordWithoutValue", "patch", {}, "pair_style sph/soil alpha",
@@ -361,12 +364,6 @@ std::vector<BadInput> cases()
           "Fix sph/soil/refine: separation 0.7 and smoothing 0.5 (h/d = 1.2) are in the unstable "
           "region for d_ij/d_ref = 1.0 (unstable (Cond. 2)): expect clumps and cracks under "
           "compression; see doc/refinement_parameters.rst");
-  warning("RefineNeighbourOverflow", "walls", {"fix r soil sph/soil/refine 10 maxlevel 4"},
-          "run 0 post no",
-          "Fix sph/soil/refine: particles refined to level 4 (spacing 0.000625) would have about 2513 "
-          "neighbours within the cutoff 0.025 (2 max(h) + skin), above LAMMPS's limit of 2000 per atom: "
-          "the run stops with 'Neighbor list overflow' if particles get there; lower maxlevel or raise "
-          "'neigh_modify one'");
 
   // ---- sph_soil/refine
   error("StaticRefineBeforeBox", "none", {}, "sph_soil/refine all",
@@ -401,7 +398,7 @@ std::vector<BadInput> cases()
         "compute c all sph/soil/atom", "Compute sph/soil/atom requires atom_style sph/soil");
   error("ComputeUnknownValue", "patch", {}, "compute c all sph/soil/atom stress",
         "Illegal compute sph/soil/atom value stress (allowed: sxx syy szz sxy sxz syz pressure sqrtJ2 "
-        "strain yielded density h level)");
+        "strain yielded density h level neighbours)");
 
   // ---- data files (the rank that reads the atom raises the error)
   data("DataMassNegative", "1 1 -1.0 0.1 1000 0 0.5 0.5 0", "",

@@ -3,9 +3,12 @@
 // state, criterion / maxlevel / region, rank independence, restart, bad input.
 #include "sph_soil_testing.h"
 
+#include "atom_vec_sph_soil.h"
 #include "domain.h"
 #include "fix.h"
+#include "force.h"
 #include "modify.h"
+#include "pair_sph_soil.h"
 
 #include <algorithm>
 #include <cmath>
@@ -117,6 +120,52 @@ TEST_F(Refinement, StaticRefinementOfASquareLatticeGivesTheHalfLattice)
     }
     EXPECT_EQ((bigint) sites.size(), expected) << "every site of the half lattice once";
   }
+}
+
+// The pair style's list follows each pair's own h (doc/theory.rst 5.8): in a 3D lattice refined
+// on one side, the daughters list about as many partners as the particles of a lattice refined
+// everywhere (with one cutoff for all, 2 h_max + skin, they would list about eight times as many)
+TEST_F(Refinement, RefinedParticlesListThePartnersOfTheirOwnSmoothingLength)
+{
+  // mean listed partners of the particles of `level` (over all ranks)
+  auto mean_partners = [&](int level) {
+    auto pair = dynamic_cast<PairSPHSoil *>(lmp->force->pair);
+    auto avec = dynamic_cast<AtomVecSPHSoil *>(lmp->atom->avec);
+    double local[2] = {0.0, 0.0}, global[2];
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      if (avec->level[i] == level) {
+        local[0] += pair->listed_partners(i);
+        local[1] += 1.0;
+      }
+    MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return global[0] / global[1];
+  };
+  auto setup = [&](const std::string &refined) {
+    HIDE_OUTPUT([&] {
+      command("clear");
+      command("units si");
+    });
+    patch(3, 8, false);
+    HIDE_OUTPUT([&] {
+      command("neighbor 0.0025 bin");
+      command("region half block INF 0.04 INF INF INF INF units box");
+      command("group half region half");
+      command("sph_soil/refine " + refined + " separation 0.5 smoothing 0.5");
+      command("fix integrate all sph/soil");
+      command("run 0 post no");
+    });
+  };
+  setup("all");
+  const double uniformly_fine = mean_partners(1);
+  setup("half");
+  const double coarse = mean_partners(0), daughters = mean_partners(1);
+  // a support of 2.4 spacings plus a skin of 0.5 fine spacings: about (4/3) pi 2.9^3 / 2 = 51
+  EXPECT_NEAR(uniformly_fine, 51.0, 8.0);
+  EXPECT_LT(daughters, 1.2 * uniformly_fine);
+  EXPECT_GT(daughters, 0.8 * uniformly_fine);
+  // the coarse particles next to the daughters list more (eight daughters where a coarse
+  // particle was), but not eight times more
+  EXPECT_LT(coarse, 4.0 * uniformly_fine);
 }
 
 TEST_F(Refinement, SplitsConserveMassMomentumEnergyAndAngularMomentum)

@@ -495,3 +495,41 @@ TEST_F(SoilPhysics, CoincidingParticlesGiveFiniteRatesAndConserveMomentum)
     EXPECT_NEAR(after[k], before[k], 1e-12 * scale) << "component " << k;
   }
 }
+
+TEST_F(SoilPhysics, ViscosityH0GivesEveryPairTheDissipationOfTheReferenceSmoothingLength)
+{
+  // the periodic patch's converging flow with h = 0.012: its artificial viscosity with
+  // alpha = beta = 1 at the reference h0 = 0.024 is the plain one with alpha = 2, beta = 4
+  // (Monaghan's mu grows with h: doc/theory.rst 5.9), and not the plain one with alpha = beta = 1
+  auto forces = [&](const std::string &pair_style) {
+    HIDE_OUTPUT([&] {
+      command("clear");
+      command("units si");
+      command("variable vx atom 0.02*sin(2*PI*y/0.16)");
+    });
+    periodic_patch();
+    soil_run_setup();
+    HIDE_OUTPUT([&] {
+      command("velocity all set v_vx v_vx NULL units box");
+      command(pair_style);
+      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
+      command("run 0 post no");
+    });
+    std::vector<double> f;
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      for (int a = 0; a < 2; a++) f.push_back(lmp->atom->f[i][a]);
+    return f;
+  };
+  const auto scaled = forces("pair_style sph/soil alpha 1 beta 1 viscosity_h0 0.024");
+  const auto plain_equivalent = forces("pair_style sph/soil alpha 2 beta 4");
+  const auto plain = forces("pair_style sph/soil alpha 1 beta 1");
+  ASSERT_EQ(scaled.size(), plain_equivalent.size());
+  double largest = 0.0, difference = 0.0, change = 0.0;
+  for (size_t k = 0; k < scaled.size(); k++) {
+    largest = std::max(largest, std::fabs(plain_equivalent[k]));
+    difference = std::max(difference, std::fabs(scaled[k] - plain_equivalent[k]));
+    change = std::max(change, std::fabs(scaled[k] - plain[k]));
+  }
+  EXPECT_LT(difference, 1e-12 * largest);
+  EXPECT_GT(change, 1e-3 * largest);
+}

@@ -25,7 +25,8 @@ struct Name {
 // accepted names (a few aliases that users of other codes would type)
 const Name names[] = {{"sxx", 0},     {"syy", 1},      {"szz", 2},      {"sxy", 3},     {"sxz", 4},
                       {"syz", 5},     {"pressure", 6}, {"sqrtJ2", 7},   {"strain", 8},  {"yielded", 9},
-                      {"density", 10}, {"rho", 10},    {"h", 11},       {"level", 12}};
+                      {"density", 10}, {"rho", 10},    {"h", 11},       {"level", 12},
+                      {"neighbours", 13}, {"neighbors", 13}};
 }    // namespace
 
 /* ---------------------------------------------------------------------- */
@@ -41,7 +42,7 @@ ComputeSPHSoilAtom::ComputeSPHSoilAtom(LAMMPS *lmp, int narg, char **arg) :
       if (strcmp(arg[iarg], n.name) == 0) found = n.quantity;
     if (found < 0)
       error->all(FLERR, "Illegal compute sph/soil/atom value {} (allowed: sxx syy szz sxy sxz syz "
-                        "pressure sqrtJ2 strain yielded density h level)", arg[iarg]);
+                        "pressure sqrtJ2 strain yielded density h level neighbours)", arg[iarg]);
     quantities.push_back((Quantity) found);
   }
   if (quantities.empty())
@@ -67,6 +68,8 @@ void ComputeSPHSoilAtom::init()
   for (auto q : quantities)
     if (q == YIELDED && !pair)
       error->all(FLERR, "Compute sph/soil/atom yielded needs pair_style sph/soil (its materials)");
+    else if (q == NEIGHBOURS && !pair)
+      error->all(FLERR, "Compute sph/soil/atom neighbours needs pair_style sph/soil (its list)");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -87,6 +90,7 @@ double ComputeSPHSoilAtom::evaluate(Quantity q, int i) const
     case DENSITY: return atom->rho[i];
     case H: return avec->smoothing_length[i];
     case LEVEL: return avec->level[i];
+    case NEIGHBOURS: return pair->listed_partners(i);
   }
   return 0.0;
 }

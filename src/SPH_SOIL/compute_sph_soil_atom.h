@@ -31,7 +31,8 @@ class ComputeSPHSoilAtom : public Compute {
   double memory_usage() override;
 
  private:
-  enum Quantity { SXX, SYY, SZZ, SXY, SXZ, SYZ, PRESSURE, SQRTJ2, STRAIN, YIELDED, DENSITY, H, LEVEL };
+  enum Quantity { SXX, SYY, SZZ, SXY, SXZ, SYZ, PRESSURE, SQRTJ2, STRAIN, YIELDED, DENSITY, H, LEVEL,
+                  NEIGHBOURS };
   std::vector<Quantity> quantities;
   int nmax;
   double *values;      // one quantity

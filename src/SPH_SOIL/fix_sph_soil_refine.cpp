@@ -43,7 +43,7 @@ const char *const STYLE = "Fix sph/soil/refine";
 /* ---------------------------------------------------------------------- */
 
 FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), maxlevel(1), list(nullptr),
+    Fix(lmp, narg, arg), maxlevel(1),
     integrator(nullptr), parameters_reported(false), last_split(0), last_split_step(-1),
     total_split(0)
 {
@@ -120,13 +120,6 @@ void FixSPHSoilRefine::init()
     error->all(FLERR, "Fix sph/soil/refine: group {} contains {} wall particles (e.g. type {}); "
                       "refine soil particles only", group->names[igroup], all_walls, any_type);
   }
-
-  SphSoilCompat::request_occasional_full_list(neighbor, this);
-}
-
-void FixSPHSoilRefine::init_list(int, NeighList *ptr)
-{
-  list = ptr;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -141,11 +134,10 @@ void FixSPHSoilRefine::setup(int)
 }
 
 /* ----------------------------------------------------------------------
-   what refinement down to maxlevel can cost. A particle at level L has the spacing d_0 / 2^L
-   but sees the whole neighbour cutoff, 2 max(h) + skin, which follows the coarsest particles:
-   its neighbours grow as 2^(D L). Warn (once) when they exceed LAMMPS's limit per atom (the
-   run would stop with "Neighbor list overflow"), and when the group split down to maxlevel
-   would not fit in the memory of the nodes of the run.
+   what refinement down to maxlevel can cost: warn (once) when the group split down to maxlevel
+   would not fit in the memory of the nodes of the run. A particle's share of the pair style's
+   list follows its own h (doc/theory.rst 5.8), so the bytes per particle stay about those of
+   now at every level.
 ------------------------------------------------------------------------- */
 
 void FixSPHSoilRefine::report_capacity()
@@ -153,42 +145,26 @@ void FixSPHSoilRefine::report_capacity()
   const int dimension = domain->dimension;
   const double daughters = SPHSoil::daughter_count(dimension);
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
-  double finest = HUGE_VAL, worst_count = 0.0;    // as doubles: 4^30 fits
+  double worst_count = 0.0;    // as a double: 4^30 fits
   bigint members = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    const int levels_left = MAX(0, maxlevel - avec->level[i]);
-    finest = MIN(finest, splitter->spacing(i) / std::pow(2.0, levels_left));
-    worst_count += std::pow(daughters, levels_left);
+    worst_count += std::pow(daughters, MAX(0, maxlevel - avec->level[i]));
     members++;
   }
-  double finest_all, worst_all;
+  double worst_all;
   bigint members_all;
-  MPI_Allreduce(&finest, &finest_all, 1, MPI_DOUBLE, MPI_MIN, world);
   MPI_Allreduce(&worst_count, &worst_all, 1, MPI_DOUBLE, MPI_SUM, world);
   MPI_Allreduce(&members, &members_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (members_all == 0 || !std::isfinite(finest_all)) return;
+  if (members_all == 0) return;
   worst_all += (double) (atom->natoms - members_all);
 
-  const double cutoff = force->pair->cutforce + neighbor->skin;
-  const double sphere = dimension == 2 ? MY_PI * cutoff * cutoff : 4.0 / 3.0 * MY_PI * cutoff * cutoff * cutoff;
-  const double neighbours = sphere / std::pow(finest_all, dimension);
-  // the pair style's half list holds about half of them
-  if (0.5 * neighbours > neighbor->oneatom && comm->me == 0)
-    error->warning(FLERR, "Fix sph/soil/refine: particles refined to level {} (spacing {:.3g}) "
-                          "would have about {:.0f} neighbours within the cutoff {:.3g} (2 max(h) + "
-                          "skin), above LAMMPS's limit of {} per atom: the run stops with 'Neighbor "
-                          "list overflow' if particles get there; lower maxlevel or raise "
-                          "'neigh_modify one'", maxlevel, finest_all, 0.5 * neighbours, cutoff,
-                   neighbor->oneatom);
-
-  // bytes per particle: the per-atom arrays of LAMMPS and of the fixes as they are now, and
-  // at the finest level the neighbour lists (an int per entry: the pair's half list and this
-  // fix's full list)
-  double per_atom = (atom->memory_usage() + modify->memory_usage()) / MAX(atom->nmax, 1);
+  // bytes per particle: the per-atom arrays of LAMMPS, of the fixes and of the pair style (its
+  // rows and its list) as they are now
+  const double per_atom =
+      (atom->memory_usage() + modify->memory_usage() + force->pair->memory_usage()) / MAX(atom->nmax, 1);
   double per_atom_max;
   MPI_Allreduce(&per_atom, &per_atom_max, 1, MPI_DOUBLE, MPI_MAX, world);
-  per_atom_max += sizeof(int) * 1.5 * neighbours;
   const double needed = worst_all * per_atom_max;
   // the memory of the nodes: each node's first rank counts its node's
   MPI_Comm node;
@@ -268,8 +244,7 @@ void FixSPHSoilRefine::end_of_step()
   last_split = 0;
   if (all_candidates == 0) return;
 
-  neighbor->build_one(list);
-  last_split = splitter->split(parents, list);
+  last_split = splitter->split(parents);
   total_split += last_split;
   next_reneighbor = update->ntimestep + 1;
   integrator->particles_refined(STYLE);

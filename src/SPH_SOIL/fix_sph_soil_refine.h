@@ -31,7 +31,6 @@ class FixSPHSoilRefine : public Fix {
   ~FixSPHSoilRefine() override;
   int setmask() override;
   void init() override;
-  void init_list(int, class NeighList *) override;
   void setup(int) override;
   void end_of_step() override;
   double compute_vector(int) override;
@@ -42,7 +41,6 @@ class FixSPHSoilRefine : public Fix {
   int maxlevel;          // particles at this level are not split again
   std::unique_ptr<class SPHSoilRefineSelection> selection;    // criterion, region
   std::unique_ptr<class SPHSoilSplitter> splitter;
-  class NeighList *list;
   class FixSPHSoil *integrator;
   bool parameters_reported;
 

@@ -18,6 +18,7 @@
 #include "soil_artificial_stress.h"
 #include "soil_kernels.h"
 #include "soil_models.h"
+#include "soil_neighbours.h"
 #include "soil_split.h"
 #include "sph_soil_pair_term.h"
 #include "sph_soil_compat.h"
@@ -25,18 +26,14 @@
 #include "sph_soil_offenders.h"
 #include "utils.h"
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 
 using namespace LAMMPS_NS;
 using SPHSoil::SoilMaterial;
-
-namespace {
-// the stress components the sums use: xx yy xy in 2D, all six in 3D (Voigt indices)
-const int STRESS_COMPONENTS[6] = {0, 1, 3, 2, 4, 5};
-template <int DIMENSION> constexpr int stress_component_count() { return DIMENSION == 2 ? 3 : 6; }
-}    // namespace
 
 // kept out of line (GCC and Clang would inline it into the pair loop)
 #if defined(__GNUC__)
@@ -48,7 +45,7 @@ template <int DIMENSION> constexpr int stress_component_count() { return DIMENSI
 /* ---------------------------------------------------------------------- */
 
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
-    Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1),
+    Pair(lmp), viscosity_alpha(0.1), viscosity_beta(0.1), viscosity_h0(0.0),
     artificial_stress_epsilon(SPHSoil::ARTIFICIAL_STRESS_EPSILON), has_artificial_stress(false),
     nmax_artificial(0), artificial(nullptr), free_slip(false),
     kernel(SPHSoil::KernelKind::cubic),
@@ -100,14 +97,15 @@ void PairSPHSoil::allocate()
 }
 
 /* ----------------------------------------------------------------------
-   pair_style sph/soil [alpha A] [beta B] [wall noslip|freeslip] [kernel cubic|wendland2]
-                       [artificial_stress epsilon]
+   pair_style sph/soil [alpha A] [beta B] [viscosity_h0 H] [wall noslip|freeslip]
+                       [kernel cubic|wendland2] [artificial_stress epsilon]
 ------------------------------------------------------------------------- */
 
 void PairSPHSoil::settings(int narg, char **arg)
 {
   // a repeated pair_style command starts again from the defaults
   viscosity_alpha = viscosity_beta = 0.1;
+  viscosity_h0 = 0.0;
   artificial_stress_epsilon = SPHSoil::ARTIFICIAL_STRESS_EPSILON;
   free_slip = false;
   kernel = SPHSoil::KernelKind::cubic;
@@ -120,6 +118,9 @@ void PairSPHSoil::settings(int narg, char **arg)
     } else if (strcmp(arg[iarg], "beta") == 0) {
       viscosity_beta = SphSoilInput::number(FLERR, lmp, "pair_style sph/soil beta", arg[iarg + 1],
                                             SphSoilInput::at_least(0.0));
+    } else if (strcmp(arg[iarg], "viscosity_h0") == 0) {
+      viscosity_h0 = SphSoilInput::number(FLERR, lmp, "pair_style sph/soil viscosity_h0",
+                                          arg[iarg + 1], SphSoilInput::at_least(0.0));
     } else if (strcmp(arg[iarg], "artificial_stress") == 0) {
       artificial_stress_epsilon =
           SphSoilInput::number(FLERR, lmp, "pair_style sph/soil artificial_stress", arg[iarg + 1],
@@ -141,8 +142,8 @@ void PairSPHSoil::settings(int narg, char **arg)
         error->all(FLERR, "Illegal pair_style sph/soil kernel {}: must be one of {}", arg[iarg + 1],
                    SPHSoil::KERNEL_NAMES);
     } else {
-      error->all(FLERR, "Illegal pair_style sph/soil keyword {} (allowed: alpha, beta, wall, "
-                        "kernel, artificial_stress)", arg[iarg]);
+      error->all(FLERR, "Illegal pair_style sph/soil keyword {} (allowed: alpha, beta, "
+                        "viscosity_h0, wall, kernel, artificial_stress)", arg[iarg]);
     }
   }
 }
@@ -335,8 +336,33 @@ void PairSPHSoil::init_style()
   }
   walls_may_turn = has_mirror_walls && turning_fix;
 
-  // a half list: each pair once, shares to both particles (see eval())
-  SphSoilCompat::request_half_neighbor_list(neighbor, this, instance_me);
+  // no request of a LAMMPS neighbour list: the pair style builds its own (build_neighbours())
+  // on LAMMPS's reneighbouring, whose ghost atoms and skin it uses; LAMMPS's exclusions apply
+  // to LAMMPS's lists only
+  if (neighbor->exclude && comm->me == 0)
+    error->warning(FLERR, "Pair sph/soil builds its own neighbour list: neigh_modify exclude "
+                          "has no effect on it");
+}
+
+/* ----------------------------------------------------------------------
+   the pair list of the owned and ghost atoms, every pair within the kernel's support at h_ij
+   plus the neighbour skin (soil_neighbours.h)
+------------------------------------------------------------------------- */
+
+void PairSPHSoil::build_neighbours()
+{
+  SPHSoil::NeighbourInput input;
+  input.x = atom->x;
+  input.h = avec->smoothing_length;
+  input.type = atom->type;
+  input.kind_of_type = type_wall_kind.data();
+  input.nlocal = atom->nlocal;
+  input.nall = atom->nlocal + atom->nghost;
+  input.dimension = domain->dimension;
+  input.support = SPHSoil::kernel_support(kernel);
+  input.skin = neighbor->skin;
+  input.newton = force->newton_pair != 0;
+  neighbours.build(input);
 }
 
 /* ----------------------------------------------------------------------
@@ -450,11 +476,11 @@ void PairSPHSoil::warn_coinciding()
   const tagint *tag = atom->tag;
   bigint pairs = 0;
   int first = -1, partner = -1;
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
+  const int *partners = neighbours.partner_data();
+  for (int i = 0; i < atom->nlocal; i++) {
     const double tolerance = 1.0e-6 * h[i];
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = list->firstneigh[i][jj] & NEIGHMASK;
+    for (int jj = neighbours.first(i); jj < neighbours.end(i); jj++) {
+      const int j = partners[jj];
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       if (dx * dx + dy * dy + dz * dz >= tolerance * tolerance) continue;
       pairs++;
@@ -505,6 +531,20 @@ double PairSPHSoil::max_wave_speed() const
   return c;
 }
 
+/* ----------------------------------------------------------------------
+   bytes of the per-atom rows and of the pair list (LAMMPS adds them to its memory report)
+------------------------------------------------------------------------- */
+
+double PairSPHSoil::memory_usage()
+{
+  double bytes = Pair::memory_usage();
+  bytes += (double) nmax_packed * (PACKED + SUMS) * sizeof(double);
+  bytes += (double) nmax_artificial * ARTIFICIAL * sizeof(double);
+  bytes += (double) nmax_extrapolation * (XSUMS + WSTATE) * sizeof(double);
+  bytes += (double) neighbours.memory_bytes();
+  return bytes;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void *PairSPHSoil::extract(const char *name, int &dim)
@@ -512,6 +552,7 @@ void *PairSPHSoil::extract(const char *name, int &dim)
   dim = 0;
   if (strcmp(name, "viscosity_alpha") == 0) return (void *) &viscosity_alpha;
   if (strcmp(name, "viscosity_beta") == 0) return (void *) &viscosity_beta;
+  if (strcmp(name, "viscosity_h0") == 0) return (void *) &viscosity_h0;
   return nullptr;
 }
 
@@ -521,6 +562,9 @@ void PairSPHSoil::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (walls_may_turn) comm->forward_comm_array(4, atom->mu);
+  // LAMMPS has just reneighboured (set-up, or the skin was used up, or atoms were added):
+  // owned and ghost atoms are new, and so is our list
+  if (neighbor->ago == 0) build_neighbours();
   if (!warned_coinciding) warn_coinciding();
   SPHSoil::with_kernel(kernel, Evaluate{this, domain->dimension, has_artificial_stress});
 }
@@ -532,7 +576,7 @@ void PairSPHSoil::compute(int eflag, int vflag)
    eight arrays; and the accumulators of the sums, set to zero
 ------------------------------------------------------------------------- */
 
-void PairSPHSoil::pack_atoms()
+template <int DIMENSION> void PairSPHSoil::pack_atoms()
 {
   const int nall = atom->nlocal + atom->nghost;
   if (nall > nmax_packed) {
@@ -560,7 +604,7 @@ void PairSPHSoil::pack_atoms()
     row[P_RHO] = rho[i];
     row[P_H] = h[i];
   }
-  if (nall > 0) memset(sums, 0, sizeof(double) * SUMS * nall);
+  if (nall > 0) memset(sums, 0, sizeof(double) * SUM_ROW<DIMENSION>() * nall);
 }
 
 /* ----------------------------------------------------------------------
@@ -599,49 +643,64 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::pack_artificial_stress(
 
 template <int DIMENSION> void PairSPHSoil::unpack_sums()
 {
-  const int nall = atom->nlocal + atom->nghost;
+  // without Newton's third law for ghost pairs, ghost rows hold shares that their owners
+  // compute themselves
+  const int n = force->newton_pair ? atom->nlocal + atom->nghost : atom->nlocal;
   double **f = atom->f, **strain_rate = avec->strain_rate, **spin = avec->spin;
   double *drho = atom->drho;
-  for (int i = 0; i < nall; i++) {
-    const double *sum = sums + (size_t) i * SUMS;
-    for (int a = 0; a < DIMENSION; a++) f[i][a] += sum[S_FORCE + a];
-    drho[i] += sum[S_DRHO<DIMENSION>()];
-    const double *e = sum + S_STRAIN_RATE<DIMENSION>(), *w = sum + S_SPIN<DIMENSION>();
-    if (DIMENSION == 2) {
-      strain_rate[i][0] += e[0];
-      strain_rate[i][1] += e[1];
-      strain_rate[i][3] += e[2];
-      spin[i][0] += w[0];
-    } else {
-      for (int k = 0; k < 6; k++) strain_rate[i][k] += e[k];
-      for (int k = 0; k < 3; k++) spin[i][k] += w[k];
-    }
+  constexpr int D = DIMENSION;
+  for (int i = 0; i < n; i++) {
+    const double *sum = sums + (size_t) i * SUM_ROW<D>();
+    for (int a = 0; a < D; a++) f[i][a] += sum[S_FORCE + a];
+    drho[i] += sum[S_DRHO<D>()];
+    // strain rate (Voigt) and spin (xy xz yz): the symmetric and antisymmetric parts
+    const double *g = sum + S_GRADIENT<D>();
+    for (int a = 0; a < D; a++) strain_rate[i][a] += g[a * D + a];
+    for (int a = 0; a < D; a++)
+      for (int b = a + 1; b < D; b++) {
+        strain_rate[i][SPHSoil::voigt_index(a, b)] += 0.5 * (g[a * D + b] + g[b * D + a]);
+        spin[i][a + b - 1] += 0.5 * (g[a * D + b] - g[b * D + a]);
+      }
   }
 }
 
 /* ----------------------------------------------------------------------
-   add the velocity-gradient term t^ab = (v_j - v_i)^a dW/dx_i^b, weighted, to a particle's row
-   of sums (strain rate in the sums' Voigt order: xx yy xy in 2D, xx yy zz xy xz yz in 3D)
+   add the velocity-gradient term t^cd = (v_b - v_a)^c dW/dx_a^d, weighted, to a particle's
+   row of sums
 ------------------------------------------------------------------------- */
 
 template <int DIMENSION>
 inline void PairSPHSoil::add_velocity_gradient(double *row, double weight, const double t[3][3])
 {
-  double *e = row + S_STRAIN_RATE<DIMENSION>(), *w = row + S_SPIN<DIMENSION>();
-  e[0] += weight * t[0][0];
-  e[1] += weight * t[1][1];
-  if (DIMENSION == 2) {
-    e[2] += weight * 0.5 * (t[0][1] + t[1][0]);
-    w[0] += weight * 0.5 * (t[0][1] - t[1][0]);
-  } else {
-    e[3] += weight * 0.5 * (t[0][1] + t[1][0]);
-    w[0] += weight * 0.5 * (t[0][1] - t[1][0]);
-    e[2] += weight * t[2][2];
-    e[4] += weight * 0.5 * (t[0][2] + t[2][0]);
-    e[5] += weight * 0.5 * (t[1][2] + t[2][1]);
-    w[1] += weight * 0.5 * (t[0][2] - t[2][0]);
-    w[2] += weight * 0.5 * (t[1][2] - t[2][1]);
-  }
+  double *g = row + S_GRADIENT<DIMENSION>();
+  for (int c = 0; c < DIMENSION; c++)
+    for (int d = 0; d < DIMENSION; d++) g[c * DIMENSION + d] += weight * t[c][d];
+}
+
+/* ----------------------------------------------------------------------
+   a pair's separation dx = x_i - x_j, r, h_ij and gradient factor (grad W = factor dx), from
+   i's position and h and j's packed row; false beyond the support (the list has a skin)
+------------------------------------------------------------------------- */
+
+template <int DIMENSION, class Kernel>
+inline bool PairSPHSoil::pair_geometry(const double *xi, double hi, const double *pj,
+                                       PairGeometry &g)
+{
+  g.dx[0] = xi[0] - pj[P_X];
+  g.dx[1] = xi[1] - pj[P_X + 1];
+  g.dx[2] = DIMENSION == 3 ? xi[2] - pj[P_X + 2] : 0.0;
+  g.r2 = g.dx[0] * g.dx[0] + g.dx[1] * g.dx[1] + g.dx[2] * g.dx[2];
+  g.hij = 0.5 * (hi + pj[P_H]);
+  constexpr double SUPPORT2 = Kernel::SUPPORT * Kernel::SUPPORT;
+  if (g.r2 >= SUPPORT2 * g.hij * g.hij) return false;
+  // the square root and the two divisions are independent of each other, so that the
+  // processor overlaps them; at r = 0 (coinciding particles) q = 0 takes the kernel's inner
+  // piece, and 1/max(r^2, DBL_MIN) keeps the unused h/r finite (0) without a branch
+  g.r = sqrt(g.r2);
+  g.inv_h = 1.0 / g.hij;
+  const double inv_r2 = 1.0 / std::max(g.r2, DBL_MIN);
+  g.factor = Kernel::template gradient_factor_inside<DIMENSION>(g.r, g.inv_h, g.hij * g.r * inv_r2);
+  return true;
 }
 
 /* ----------------------------------------------------------------------
@@ -663,7 +722,6 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   using SPHSoil::pair_density_rate;
   using SPHSoil::pair_force;
   using SPHSoil::pair_velocity_gradient;
-  constexpr int NSTRESS = stress_component_count<DIMENSION>();
   const int newton_pair = force->newton_pair, nlocal = atom->nlocal;
   const bool update_soil = newton_pair || soil < nlocal;
   const bool update_wall = newton_pair || wall < nlocal;
@@ -689,10 +747,9 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   const double *ss = ps + P_STRESS;
   double share = 1.0;    // of the tangential velocity
   if (slip == SLIP_NONE) {
-    for (int m = 0; m < NSTRESS; m++) {
-      const int k = STRESS_COMPONENTS[m];
-      partner.stress_sum[k] = 2.0 * ss[k];
-    }
+    for (int a = 0; a < DIMENSION; a++)
+      for (int b = a; b < DIMENSION; b++)
+        partner.stress_sum[SPHSoil::voigt_index(a, b)] = 2.0 * ss[SPHSoil::voigt_index(a, b)];
   } else if (slip == SLIP_FREE) {
     SPHSoil::mirrored_stress_sum(ss, normal, partner.stress_sum);
     share = 0.0;
@@ -720,15 +777,16 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
     for (int a = 0; a < DIMENSION; a++) normal_distance += partner.dx[a] * normal[a];
     approach = vn * normal_distance;
   }
-  pair_force<DIMENSION>(partner, approach, r2, hij, c_ij, viscosity_alpha, viscosity_beta,
+  pair_force<DIMENSION>(partner, approach, r2, hij, SPHSoil::viscosity_length(viscosity_h0, SPHSoil::viscosity_h_weight(viscosity_h0), hij),
+                        c_ij, viscosity_alpha, viscosity_beta,
                         ps[P_MASS] * pw[P_MASS], force_on_soil);
   const double mw = pw[P_MASS];
   if (update_wall) {
-    double *ow = sums + (size_t) wall * SUMS;
+    double *ow = sums + (size_t) wall * SUM_ROW<DIMENSION>();
     for (int a = 0; a < DIMENSION; a++) ow[S_FORCE + a] -= force_on_soil[a];
   }
   if (!update_soil) return;
-  double *os = sums + (size_t) soil * SUMS;
+  double *os = sums + (size_t) soil * SUM_ROW<DIMENSION>();
   os[S_DRHO<DIMENSION>()] += mw * drho;
   for (int a = 0; a < DIMENSION; a++) os[S_FORCE + a] += force_on_soil[a];
   pair_velocity_gradient<DIMENSION>(partner, t);
@@ -744,141 +802,120 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
 
 template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS> void PairSPHSoil::eval()
 {
-  using SPHSoil::PairPartner;
-  using SPHSoil::pair_density_rate;
-  using SPHSoil::pair_force;
-  using SPHSoil::pair_velocity_gradient;
+  using SPHSoil::voigt_index;
+  constexpr int D = DIMENSION;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
   // members as locals: the stores to the sums (double *) could otherwise alias the double
   // members, which the compiler would then reload for every pair
-  const double alpha = viscosity_alpha, beta_viscosity = viscosity_beta;
+  const double alpha = viscosity_alpha, beta_viscosity = viscosity_beta, h0 = viscosity_h0;
+  const double h0_weight = SPHSoil::viscosity_h_weight(viscosity_h0);
   double *const *const c_type = sound_speed_ij;
   const int *const wall_kind = type_wall_kind.data();
 
-  pack_atoms();    // (re)allocates the packed rows: take their addresses after it
-  if (has_extrapolated_walls) extrapolate_to_walls<DIMENSION, Kernel>();
-  if (ARTIFICIAL_STRESS) pack_artificial_stress<DIMENSION, Kernel>();
+  pack_atoms<D>();    // (re)allocates the packed rows: take their addresses after it
+  if (has_extrapolated_walls) extrapolate_to_walls<D, Kernel>();
+  if (ARTIFICIAL_STRESS) pack_artificial_stress<D, Kernel>();
   const int *const artificial_type = type_artificial_stress.data();
   const double *const in = packed;
   double *const out = sums;
-  constexpr int DRHO = S_DRHO<DIMENSION>();
-  constexpr int NSTRESS = stress_component_count<DIMENSION>();
+  constexpr int ROW = SUM_ROW<D>();
+  constexpr int DRHO = S_DRHO<D>(), GRADIENT = S_GRADIENT<D>();
+  const int *const partners = neighbours.partner_data();
 
-  const int inum = list->inum;
-  const int *ilist = list->ilist;
-  const int *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-
-  auto add_gradient = [&](int k, double weight, const double t[3][3]) {
-    add_velocity_gradient<DIMENSION>(out + (size_t) k * SUMS, weight, t);
-  };
-
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
+  for (int i = 0; i < nlocal; i++) {
     const int itype = type[i];
-    const int wall_i = wall_kind[itype];
+    // i's inputs as local copies: the stores to j's sums (double *) could alias the packed
+    // rows, and the compiler would reload them for every pair
     const double *pi = in + (size_t) i * PACKED;
-    const double *xi = pi + P_X;
+    double xi[3], vi[3], si[6];
+    for (int a = 0; a < 3; a++) {
+      xi[a] = pi[P_X + a];
+      vi[a] = pi[P_V + a];
+    }
+    for (int k = 0; k < 6; k++) si[k] = pi[P_STRESS + k];
     const double hi = pi[P_H];
-    const double *vi = pi + P_V;
-    const double *si = pi + P_STRESS;
     const double mi = pi[P_MASS], rhoi = pi[P_RHO], volume_i = pi[P_VOLUME];
+    const double *c_i = c_type[itype];
 
     // i's shares, accumulated here and stored once after the j loop
-    double drho_i = 0.0, force_i[3] = {0.0, 0.0, 0.0};
-    double gradient_i[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
-
-    const int *jlist = firstneigh[i];
-    const int jnum = numneigh[i];
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const int jtype = type[j];
-      const int wall_j = wall_kind[jtype];
-      if (wall_i && wall_j) continue;
-      const double *pj = in + (size_t) j * PACKED;
-      double dx[3] = {xi[0] - pj[P_X], xi[1] - pj[P_X + 1],
-                      DIMENSION == 3 ? xi[2] - pj[P_X + 2] : 0.0};
-      const double r2 = dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2];
-      const double hij = 0.5 * (hi + pj[P_H]);
-      constexpr double SUPPORT2 = Kernel::SUPPORT * Kernel::SUPPORT;
-      if (r2 >= SUPPORT2 * hij * hij) continue;
-
-      // the square root and the two divisions are independent of each other, so that the
-      // processor overlaps them; at r = 0 (coinciding particles) the gradient is 0 whatever
-      // the factor, and 1/r^2 = 0 keeps the factor finite
-      const double r = sqrt(r2);
-      const double inv_h = 1.0 / hij;
-      const double inv_r2 = r2 > 0.0 ? 1.0 / r2 : 0.0;
-      const double factor =
-          Kernel::template gradient_factor_from_inverse<DIMENSION>(r, inv_h, hij * r * inv_r2);
-      const double c_ij = c_type[itype][jtype];
-
-      PairPartner partner;
-      double approach, force[3], t[3][3];
-
-      if (wall_i != WALL_MIRROR && wall_j != WALL_MIRROR) {
-        // soil-soil, seen from i: grad = dW/dx_i; j gets the same terms with the opposite
-        // force and dW/dx_j = -grad (Newton's third law). An extrapolated wall particle is a
-        // partner like a soil particle, with the soil's state extrapolated to it (its own
-        // rates are summed and never used).
-        const double *sj = pj + P_STRESS;
-        for (int a = 0; a < DIMENSION; a++) {
-          partner.dx[a] = dx[a];
-          partner.grad[a] = factor * dx[a];
-          partner.velocity[a] = vi[a] - pj[P_V + a];
-        }
-        for (int m = 0; m < NSTRESS; m++) {
-          const int k = STRESS_COMPONENTS[m];
-          partner.stress_sum[k] = si[k] + sj[k];
-        }
-        if (ARTIFICIAL_STRESS && (artificial_type[itype] || artificial_type[jtype])) {
-          // (R_i + R_j) (W(r) / W(spacing))^4
-          const double *ai = artificial + (size_t) i * ARTIFICIAL;
-          const double *aj = artificial + (size_t) j * ARTIFICIAL;
-          const double weight = SPHSoil::artificial_stress_weight(
-              Kernel::shape(r * inv_h) * 0.5 * (ai[A_INVERSE_SHAPE] + aj[A_INVERSE_SHAPE]));
-          for (int m = 0; m < NSTRESS; m++) {
-            const int k = STRESS_COMPONENTS[m];
-            partner.stress_sum[k] += weight * (ai[A_STRESS + k] + aj[A_STRESS + k]);
-          }
-        }
-        partner.mean_density = 0.5 * (rhoi + pj[P_RHO]);
-        const double mj = pj[P_MASS];
-        const bool update_j = newton_pair || j < nlocal;
-        double *oj = out + (size_t) j * SUMS;
-
-        const double drho = pair_density_rate<DIMENSION>(partner, approach);
-        drho_i += mj * drho;
-        if (update_j) oj[DRHO] += mi * drho;
-        pair_force<DIMENSION>(partner, approach, r2, hij, c_ij, alpha, beta_viscosity, mi * mj, force);
-        for (int a = 0; a < DIMENSION; a++) {
-          force_i[a] += force[a];
-          if (update_j) oj[S_FORCE + a] -= force[a];
-        }
-        // g_i += V_j (v_j - v_i) x grad, and g_j += V_i (v_i - v_j) x (-grad): the same tensor
-        pair_velocity_gradient<DIMENSION>(partner, t);
-        const double volume_j = pj[P_VOLUME];
-        for (int a = 0; a < DIMENSION; a++)
-          for (int b = 0; b < DIMENSION; b++) gradient_i[a][b] += volume_j * t[a][b];
-        if (update_j) add_gradient(j, volume_i, t);
-        continue;
-      }
-
-      // a soil particle and a mirror wall particle: out of line, so that the soil-soil pair
-      // above keeps its registers (inlined, the larger loop cost 15 instructions per pair)
-      mirror_wall_pair<DIMENSION>(wall_i ? j : i, wall_i ? i : j, wall_i ? -1.0 : 1.0, dx, r2, hij,
-                                  factor, c_ij);
+    double drho_i = 0.0, force_i[D], gradient_i[D][D];
+    for (int a = 0; a < D; a++) {
+      force_i[a] = 0.0;
+      for (int b = 0; b < D; b++) gradient_i[a][b] = 0.0;
     }
 
-    double *oi = out + (size_t) i * SUMS;
+    // the plain pairs: soil-soil, or soil and an extrapolated wall particle (a partner like a
+    // soil particle, with the soil's state extrapolated to it; its own rates are summed and
+    // never used). Seen from i: grad = dW/dx_i; j gets the same terms with the opposite force
+    // and dW/dx_j = -grad (Newton's third law). Without Newton's third law for ghost pairs,
+    // a ghost j's row is written and never read (unpack_sums()).
+    const int plain_end = neighbours.plain_end(i);
+    for (int jj = neighbours.first(i); jj < plain_end; jj++) {
+      const int j = partners[jj];
+      const double *pj = in + (size_t) j * PACKED;
+      PairGeometry g;
+      if (!pair_geometry<D, Kernel>(xi, hi, pj, g)) continue;
+      const int jtype = type[j];
+      const double *sj = pj + P_STRESS;
+      double dv[3], stress_sum[6];
+      for (int a = 0; a < D; a++) {
+        dv[a] = vi[a] - pj[P_V + a];
+        for (int b = a; b < D; b++) stress_sum[voigt_index(a, b)] = si[voigt_index(a, b)] + sj[voigt_index(a, b)];
+      }
+      if (ARTIFICIAL_STRESS && (artificial_type[itype] || artificial_type[jtype])) {
+        // (R_i + R_j) (W(r) / W(spacing))^4
+        const double *ai = artificial + (size_t) i * ARTIFICIAL;
+        const double *aj = artificial + (size_t) j * ARTIFICIAL;
+        const double weight = SPHSoil::artificial_stress_weight(
+            Kernel::shape(g.r * g.inv_h) * 0.5 * (ai[A_INVERSE_SHAPE] + aj[A_INVERSE_SHAPE]));
+        for (int a = 0; a < D; a++)
+          for (int b = a; b < D; b++) {
+            const int k = voigt_index(a, b);
+            stress_sum[k] += weight * (ai[A_STRESS + k] + aj[A_STRESS + k]);
+          }
+      }
+      SPHSoil::PlainPairTerms<D> terms;
+      SPHSoil::plain_pair<D>(g.dx, g.r2, g.hij, SPHSoil::viscosity_length(h0, h0_weight, g.hij), g.factor, dv,
+                             stress_sum, 0.5 * (rhoi + pj[P_RHO]), c_i[jtype], alpha,
+                             beta_viscosity, terms);
+
+      const double mj = pj[P_MASS], volume_j = pj[P_VOLUME], mass_product = mi * mj;
+      double *oj = out + (size_t) j * ROW;
+      drho_i += mj * terms.density_rate;
+      oj[DRHO] += mi * terms.density_rate;
+      for (int a = 0; a < D; a++) {
+        const double force = mass_product * terms.force[a];
+        force_i[a] += force;
+        oj[S_FORCE + a] -= force;
+      }
+      // g_i += V_j (v_j - v_i) x grad, and g_j += V_i (v_i - v_j) x (-grad): the same tensor
+      for (int c = 0; c < D; c++)
+        for (int d = 0; d < D; d++) {
+          gradient_i[c][d] += volume_j * terms.gradient[c][d];
+          oj[GRADIENT + c * D + d] += volume_i * terms.gradient[c][d];
+        }
+    }
+
+    double *oi = out + (size_t) i * ROW;
     oi[DRHO] += drho_i;
-    for (int a = 0; a < DIMENSION; a++) oi[S_FORCE + a] += force_i[a];
-    add_gradient(i, 1.0, gradient_i);
+    for (int a = 0; a < D; a++) oi[S_FORCE + a] += force_i[a];
+    for (int c = 0; c < D; c++)
+      for (int d = 0; d < D; d++) oi[GRADIENT + c * D + d] += gradient_i[c][d];
+
+    // a soil particle and a mirror wall particle: out of line, so that the plain pair above
+    // keeps its registers (inlined, the larger loop cost 15 instructions per pair)
+    const bool wall_i = wall_kind[itype] == WALL_MIRROR;
+    for (int jj = plain_end; jj < neighbours.end(i); jj++) {
+      const int j = partners[jj];
+      PairGeometry g;
+      if (!pair_geometry<D, Kernel>(xi, hi, in + (size_t) j * PACKED, g)) continue;
+      mirror_wall_pair<D>(wall_i ? j : i, wall_i ? i : j, wall_i ? -1.0 : 1.0, g.dx, g.r2, g.hij,
+                          g.factor, c_i[type[j]]);
+    }
   }
 
-  unpack_sums<DIMENSION>();
+  unpack_sums<D>();
 }
 
 /* ----------------------------------------------------------------------
@@ -908,11 +945,11 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::extrapolate_to_walls()
   double **stress = avec->stress;
   constexpr double SUPPORT2 = Kernel::SUPPORT * Kernel::SUPPORT;
 
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
+  const int *partners = neighbours.partner_data();
+  for (int i = 0; i < nlocal; i++) {
     const int wall_i = wall_kind[type[i]];
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = list->firstneigh[i][jj] & NEIGHMASK;
+    for (int jj = neighbours.first(i); jj < neighbours.plain_end(i); jj++) {
+      const int j = partners[jj];
       const int wall_j = wall_kind[type[j]];
       // a soil particle and an extrapolated wall particle
       if (!((wall_i == WALL_EXTRAPOLATE && wall_j == SOIL) ||

@@ -23,6 +23,7 @@ PairStyle(sph/soil,PairSPHSoil);
 #include "soil_constitutive.h"
 #include "soil_kernels.h"
 #include "soil_material.h"
+#include "soil_neighbours.h"
 
 #include <vector>
 
@@ -47,11 +48,20 @@ class PairSPHSoil : public Pair {
   const SPHSoil::ConstitutiveModel *model(int type) const { return materials[type].model.get(); }
   double max_wave_speed() const;
   SPHSoil::KernelKind kernel_kind() const { return kernel; }
+  // owned atom i's partners in the pair list (each pair is listed at one of its two atoms);
+  // 0 for atoms added since the list was built
+  int listed_partners(int i) const
+  {
+    return i < neighbours.size() ? neighbours.end(i) - neighbours.first(i) : 0;
+  }
+  double memory_usage() override;
   // whether the pair loop adds the artificial stress (known after init)
   bool artificial_stress_active() const { return has_artificial_stress; }
 
  protected:
   double viscosity_alpha, viscosity_beta;    // Monaghan artificial viscosity
+  double viscosity_h0;    // > 0: every pair gets the dissipation of h = h0
+                          // (SPHSoil::viscosity_length); 0: alpha and beta as they are
   // Gray, Monaghan & Swift's artificial stress (doc/theory.rst 2.5): its epsilon, for the
   // types whose soil can carry tension (type_artificial_stress: tensile strength > 0)
   double artificial_stress_epsilon;
@@ -73,7 +83,12 @@ class PairSPHSoil : public Pair {
   // and friction coefficient
   std::vector<int> type_wall_kind, type_wall_slip;
   std::vector<double> type_wall_friction;
-  enum { SOIL = 0, WALL_MIRROR = 1, WALL_EXTRAPOLATE = 2 };
+  // (the neighbour list's kinds: it sorts the partners by them)
+  enum {
+    SOIL = SPHSoil::NEIGHBOUR_SOIL,
+    WALL_MIRROR = SPHSoil::NEIGHBOUR_MIRROR_WALL,
+    WALL_EXTRAPOLATE = SPHSoil::NEIGHBOUR_EXTRAPOLATED_WALL
+  };
   enum { SLIP_NONE = 0, SLIP_FREE = 1, SLIP_FRICTION = 2 };
 
   // Walls that extrapolate the soil's state (Adami, Hu & Adams 2012; doc/theory.rst 4.5). Per
@@ -104,22 +119,32 @@ class PairSPHSoil : public Pair {
   // position, velocity estimate, stress / rho^2 (Voigt), volume m / rho, mass, density, h
   enum { P_X = 0, P_V = 3, P_STRESS = 6, P_VOLUME = 12, P_MASS = 13, P_RHO = 14, P_H = 15,
          PACKED = 16 };
-  // and its sums, one row of SUMS doubles per atom: force, density rate, strain rate
-  // (2D: xx yy xy; 3D: Voigt), spin (2D: xy; 3D: xy xz yz)
+  // and its sums, one row per atom: force, density rate, the velocity gradient's sum
+  // (sum V t^cd, row by row), split into strain rate and spin when unpacked; a row holds
+  // SUM_ROW doubles (8 in 2D, 16 in 3D: whole cache lines), SUMS at most
   enum { S_FORCE = 0, SUMS = 16 };
   template <int DIMENSION> static constexpr int S_DRHO() { return DIMENSION; }
-  template <int DIMENSION> static constexpr int S_STRAIN_RATE() { return DIMENSION + 1; }
-  template <int DIMENSION> static constexpr int S_SPIN() { return DIMENSION == 2 ? 6 : 10; }
+  template <int DIMENSION> static constexpr int S_GRADIENT() { return DIMENSION + 1; }
+  template <int DIMENSION> static constexpr int SUM_ROW() { return DIMENSION == 2 ? 8 : 16; }
   int nmax_packed;
   double *packed;
   double *sums;
-  void pack_atoms();
+  template <int DIMENSION> void pack_atoms();
   template <int DIMENSION> void unpack_sums();
 
   void allocate();
   void set_type_material(int type, const SPHSoil::SoilMaterial &material);
   void read_material_file(const char *file, std::vector<SPHSoil::SoilMaterial> &list);
   template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS> void eval();
+  struct PairGeometry {
+    double dx[3], r2, r, inv_h, hij, factor;
+  };
+  template <int DIMENSION, class Kernel>
+  static bool pair_geometry(const double *xi, double hi, const double *pj, PairGeometry &g);
+  // the pair list, each pair with its own cutoff (soil_neighbours.h), rebuilt whenever LAMMPS
+  // reneighbours
+  SPHSoil::NeighbourList neighbours;
+  void build_neighbours();
   template <int DIMENSION>
   void mirror_wall_pair(int soil, int wall, double sign, const double dx[3], double r2, double hij,
                         double factor, double c_ij);

@@ -67,21 +67,21 @@ struct CubicSpline {
     return -c * 0.75 * t * t / q;
   }
 
-  // The same as gradient_factor(), in the form the pair loop uses: from 1/h and h/r, which it
-  // gets from a single division 1/(h r), so that no division is left here (divisions and the
-  // square root are what the pair loop waits for).
+  // The same as gradient_factor() inside the support (q < 2, which the pair loop has tested),
+  // in the form the pair loop uses: from 1/h and h/r, which it gets from 1/h_ij and 1/r^2, so
+  // that no division is left here; and without a branch: both pieces are computed and one is
+  // selected (which piece a pair needs is a coin toss the processor would mispredict).
   template <int DIMENSION>
-  static inline double gradient_factor_from_inverse(double r, double inv_h, double h_over_r)
+  static inline double gradient_factor_inside(double r, double inv_h, double h_over_r)
   {
     constexpr double PI = 3.14159265358979323846;
     constexpr double C = DIMENSION == 3 ? 1.0 / PI : 10.0 / (7.0 * PI);
     const double q = r * inv_h;
-    if (q >= 2.0) return 0.0;
     const double inv_h2 = inv_h * inv_h;
     const double c = DIMENSION == 3 ? C * inv_h2 * inv_h2 * inv_h : C * inv_h2 * inv_h2;
-    if (q < 1.0) return c * (-3.0 + 2.25 * q);
     const double t = 2.0 - q;
-    return -c * 0.75 * t * t * h_over_r;
+    const double inner = -3.0 + 2.25 * q, outer = -0.75 * t * t * h_over_r;
+    return c * (q < 1.0 ? inner : outer);
   }
 
   // d2W/dr2, whose sign decides the tensile/compressive (Swegle) instability:

@@ -58,14 +58,13 @@ struct WendlandC2 {
     return -5.0 * norm(dimension, h) / (h * h) * t * t * t;
   }
 
-  // as CubicSpline's: from 1/h (h/r is not needed: the factor has no 1/r)
+  // as CubicSpline's, inside the support: from 1/h (h/r is not needed: the factor has no 1/r)
   template <int DIMENSION>
-  static inline double gradient_factor_from_inverse(double r, double inv_h, double /*h_over_r*/)
+  static inline double gradient_factor_inside(double r, double inv_h, double /*h_over_r*/)
   {
     constexpr double PI = 3.14159265358979323846;
     constexpr double C = DIMENSION == 3 ? 21.0 / (16.0 * PI) : 7.0 / (4.0 * PI);
     const double q = r * inv_h;
-    if (q >= 2.0) return 0.0;
     const double inv_h2 = inv_h * inv_h;
     const double c = DIMENSION == 3 ? C * inv_h2 * inv_h2 * inv_h : C * inv_h2 * inv_h2;
     const double t = 1.0 - 0.5 * q;

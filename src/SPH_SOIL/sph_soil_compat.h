@@ -23,11 +23,6 @@
      (PropertyAtomName, DataVelValues: the parameter types of the base class's functions)
    - Atom::peratom: array + nperatom, `char *` names -> std::vector, std::string
      (whether Atom has nperatom)
-   - neighbour list requests: Neighbor::request() and public NeighRequest
-     fields -> Neighbor::add_request(client, NeighConst::REQ_* flags), lists
-     found by find_list() (whether add_request(client, flags) compiles)
-   - Neighbor::build_one(list, preflag) -> build_one(list), where build()
-     marks occasional lists stale itself (whether the two-argument form compiles)
    - Domain::find_region() index -> Domain::get_region_by_id()
    - Comm::forward_comm_pair(Pair *) -> forward_comm(Pair *), and reverse likewise
      (whether the Pair overload compiles)
@@ -41,13 +36,9 @@
 
 #include "atom.h"
 #include "atom_vec.h"
-#include "command.h"
 #include "domain.h"
 #include "error.h"
 #include "lammps.h"
-#include "neigh_list.h"
-#include "neigh_request.h"
-#include "neighbor.h"
 #include "region.h"
 
 #include <cstdio>
@@ -57,19 +48,7 @@
 
 namespace LAMMPS_NS {
 
-class Fix;
 class Pair;
-
-// Releases before add_request() have no NeighConst::REQ_* flags. Qualified lookup of
-// NeighConst::REQ_FULL finds LAMMPS's own enumerator where it exists (a direct member wins) and
-// falls back to this namespace, nominated below, only where it does not; there the flags go
-// only to the older request path below, which reads them bit by bit.
-namespace NeighConst {
-  namespace SphSoilNoRequestFlags {
-    enum { REQ_FULL = 1 << 0, REQ_OCCASIONAL = 1 << 1 };
-  }
-  using namespace SphSoilNoRequestFlags;
-}    // namespace NeighConst
 
 namespace SphSoilCompat {
 
@@ -138,118 +117,6 @@ void set_peratom(AtomT *atom, const std::string &name, void *address, int dataty
     }
   }
   atom->add_peratom(name.c_str(), address, datatype, cols);
-}
-
-/* ---------------------------------------------------------------------- */
-// Neighbour lists
-
-// The older request path needs the client's kind (the newer add_request() overloads dispatch on it).
-inline bool client_is_fix(const Pair *) { return false; }
-inline bool client_is_fix(const Fix *) { return true; }
-
-namespace detail {
-  template <class N, class Client>
-  auto request(N *neighbor, Client *client, int flags, int /*instance*/, Preferred)
-      -> decltype((void) neighbor->add_request(client, flags))
-  {
-    neighbor->add_request(client, flags);
-  }
-  // the older form: the flags' meaning set field by field
-  template <class N, class Client>
-  void request(N *neighbor, Client *client, int flags, int instance, Fallback)
-  {
-    const int irequest = neighbor->request(client, instance);
-    auto *request = neighbor->requests[irequest];
-    if (flags & NeighConst::REQ_FULL) {
-      request->half = 0;
-      request->full = 1;
-    }
-    if (client_is_fix(client)) {
-      request->pair = 0;
-      request->fix = 1;
-    }
-    if (flags & NeighConst::REQ_OCCASIONAL) request->occasional = 1;
-  }
-}    // namespace detail
-
-// The default (half) neighbour list for a pair style (instance: its index under pair hybrid,
-// which only the older request() takes).
-template <class Client>
-void request_half_neighbor_list(Neighbor *neighbor, Client *client, int instance = 0)
-{
-  detail::request(neighbor, client, 0, instance, Preferred());
-}
-
-// An occasional full list for a fix (built on demand with build_occasional_list()).
-template <class Client> void request_occasional_full_list(Neighbor *neighbor, Client *client)
-{
-  detail::request(neighbor, client, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL, 0, Preferred());
-}
-
-// A command's occasional full list: request before lmp->init(), find after it with
-// command_neighbor_list(handle).
-namespace detail {
-  template <class N>
-  auto request_command(N *neighbor, Command *command, const char *style, Preferred)
-      -> decltype((void) neighbor->add_request(command, style, 0), 0)
-  {
-    neighbor->add_request(command, style, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
-    return 0;
-  }
-  template <class N> int request_command(N *neighbor, Command *command, const char *style, Fallback)
-  {
-    const int irequest = neighbor->request(command);
-    auto *request = neighbor->requests[irequest];
-    request->pair = 0;
-    request->command = 1;
-    request->half = 0;
-    request->full = 1;
-    request->occasional = 1;
-    request->command_style = style;
-    return irequest;
-  }
-  template <class N>
-  auto command_list(N *neighbor, Command *command, int /*handle*/, Preferred)
-      -> decltype(neighbor->find_list(command))
-  {
-    return neighbor->find_list(command);
-  }
-  template <class N> NeighList *command_list(N *neighbor, Command * /*command*/, int handle, Fallback)
-  {
-    return neighbor->lists[handle];
-  }
-}    // namespace detail
-
-inline int request_command_full_list(Neighbor *neighbor, Command *command, const char *style)
-{
-  return detail::request_command(neighbor, command, style, Preferred());
-}
-
-inline NeighList *command_neighbor_list(Neighbor *neighbor, Command *command, int handle)
-{
-  return detail::command_list(neighbor, command, handle, Preferred());
-}
-
-// Build an occasional list now, even if it was built earlier in this step (a second command
-// at the same step must not get the first one's stale list). The older build_one() needs
-// preflag = 1 for that; the newer one has no flag because Neighbor::build() marks occasional
-// lists stale, and callers call build() first.
-namespace detail {
-  template <class N>
-  auto build_occasional(N *neighbor, NeighList *list, Preferred)
-      -> decltype(neighbor->build_one(list, 1))
-  {
-    return neighbor->build_one(list, 1);
-  }
-  template <class N> void build_occasional(N *neighbor, NeighList *list, Fallback)
-  {
-    neighbor->build_one(list);
-  }
-}    // namespace detail
-
-inline void build_occasional_list(Neighbor *neighbor, NeighList *list)
-{
-  detail::build_occasional(neighbor, list, Preferred());
 }
 
 /* ---------------------------------------------------------------------- */

@@ -41,6 +41,23 @@ inline double monaghan_viscosity(double alpha, double beta, double n, double d, 
   return n * (beta * n - alpha * c * d) / (d * d * rhobar);
 }
 
+// The artificial viscosity across refinement levels (doc/theory.rst 5.9). Monaghan's Pi acts
+// as a kinematic viscosity of about alpha c h / 8, and beta's term grows with h^2: a daughter
+// with half its parent's h gets half the dissipation. With a reference h0 > 0 a pair's alpha
+// becomes alpha h0 / h_ij and its beta beta (h0 / h_ij)^2, so that every level gets the
+// dissipation of particles of smoothing length h0; since mu = h v.x / (r^2 + 0.01 h^2), that is
+// mu with h0 in place of h in its numerator: the length returned here (h_ij for h0 = 0).
+// Written as h0 + w h with w = 1 for h0 = 0, else 0 (viscosity_h_weight()): a multiply-add in
+// the pair loop rather than a select.
+inline double viscosity_h_weight(double h0)
+{
+  return h0 > 0.0 ? 0.0 : 1.0;
+}
+inline double viscosity_length(double h0, double h_weight, double h)
+{
+  return h0 + h_weight * h;
+}
+
 // (v_a - v_b) . grad: the density rate per unit m_b; and (v_a - v_b) . (x_a - x_b), which says
 // whether they approach (for the viscosity)
 template <int DIMENSION>
@@ -59,13 +76,13 @@ inline double pair_density_rate(const PairPartner &p, double &approach)
 // only for approaching pairs (approach < 0)
 template <int DIMENSION>
 inline void pair_force(const PairPartner &p, double approach, double r2, double h,
-                       double sound_speed, double alpha, double beta, double mass_product,
-                       double force[3])
+                       double viscosity_h, double sound_speed, double alpha, double beta,
+                       double mass_product, double force[3])
 {
   double viscosity = 0.0;
   if (approach < 0.0)
-    viscosity = monaghan_viscosity(alpha, beta, h * approach, r2 + 0.01 * h * h, p.mean_density,
-                                   sound_speed);
+    viscosity = monaghan_viscosity(alpha, beta, viscosity_h * approach, r2 + 0.01 * h * h,
+                                   p.mean_density, sound_speed);
   const double *s = p.stress_sum;
   const double *g = p.grad;
   if (DIMENSION == 2) {
@@ -88,6 +105,53 @@ inline void pair_velocity_gradient(const PairPartner &p, double t[3][3])
 {
   for (int a = 0; a < DIMENSION; a++)
     for (int b = 0; b < DIMENSION; b++) t[a][b] = -p.velocity[a] * p.grad[b];
+}
+
+// The Voigt index of stress component (a, b): xx yy zz xy xz yz
+constexpr int voigt_index(int a, int b)
+{
+  return a == b ? a : (a + b == 1 ? 3 : (a + b == 2 ? 4 : 5));
+}
+
+// A plain pair (two soil particles, or soil and a wall particle that extrapolates the soil's
+// state) in the form of the hot loop. With grad W = factor x_ab and the density rate, the
+// viscosity's approach and the velocity gradient all made of v_ab and x_ab, everything follows
+// from the separation, the factor, the velocity difference and the stress sum:
+//   density rate per unit m_b     factor (v_ab . x_ab)
+//   force on a per unit m_a m_b   factor ((S - Pi_ab I) x_ab)
+//   velocity gradient             t^cd = -factor v_ab^c x_ab^d, per unit V_b
+// with S = sigma_a/rho_a^2 + sigma_b/rho_b^2 (Voigt) and Monaghan's Pi_ab for approaching
+// pairs (viscosity_h: viscosity_length()). Plain scalars with compile-time indices only: the compiler keeps the pair in
+// registers (the PairPartner form above, with the stress components through a table, kept
+// the pair in memory: 40% more instructions per pair).
+template <int DIMENSION> struct PlainPairTerms {
+  double density_rate;
+  double force[DIMENSION];
+  double gradient[DIMENSION][DIMENSION];
+};
+
+template <int DIMENSION>
+inline void plain_pair(const double dx[3], double r2, double h, double viscosity_h, double factor,
+                       const double dv[3], const double stress_sum[6], double mean_density,
+                       double sound_speed, double alpha, double beta,
+                       PlainPairTerms<DIMENSION> &out)
+{
+  double approach = 0.0;
+  for (int a = 0; a < DIMENSION; a++) approach += dv[a] * dx[a];
+  out.density_rate = factor * approach;
+  double viscosity = 0.0;
+  if (approach < 0.0)
+    viscosity = monaghan_viscosity(alpha, beta, viscosity_h * approach, r2 + 0.01 * h * h,
+                                   mean_density, sound_speed);
+  for (int a = 0; a < DIMENSION; a++) {
+    double sum = -viscosity * dx[a];
+    for (int b = 0; b < DIMENSION; b++) sum += stress_sum[voigt_index(a, b)] * dx[b];
+    out.force[a] = factor * sum;
+  }
+  for (int c = 0; c < DIMENSION; c++) {
+    const double scaled = -factor * dv[c];
+    for (int d = 0; d < DIMENSION; d++) out.gradient[c][d] = scaled * dx[d];
+  }
 }
 
 // R sigma R with R = I - 2 n n^T, the mirror image of a stress in the plane of unit normal n:

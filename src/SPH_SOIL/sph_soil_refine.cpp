@@ -51,7 +51,6 @@ void SPHSoilRefine::command(int narg, char **arg)
     error->all(FLERR, "sph_soil/refine command requires pair_style sph/soil");
 
   if (comm->me == 0) utils::logmesg(lmp, "System init for sph_soil/refine ...\n");
-  const int handle = SphSoilCompat::request_command_full_list(neighbor, this, STYLE);
   lmp->init();
   splitter.init();
   selection.init();
@@ -66,7 +65,7 @@ void SPHSoilRefine::command(int narg, char **arg)
     error->all(FLERR, "sph_soil/refine: group {} contains {} wall particles; refine soil particles only",
                arg[0], all_walls);
 
-  // ghosts and the neighbour list, the way delete_atoms overlap sets them up
+  // the ghosts, the way delete_atoms overlap sets them up
   if (domain->triclinic) domain->x2lamda(atom->nlocal);
   domain->pbc();
   domain->reset_box();
@@ -75,15 +74,10 @@ void SPHSoilRefine::command(int narg, char **arg)
   comm->exchange();
   comm->borders();
   if (domain->triclinic) domain->lamda2x(atom->nlocal + atom->nghost);
-  neighbor->build(1);
-  NeighList *list = SphSoilCompat::command_neighbor_list(neighbor, this, handle);
-  // rebuilt even if an occasional list was built at this step before (a second
-  // sph_soil/refine at the same step would otherwise get the stale list of the first)
-  SphSoilCompat::build_occasional_list(neighbor, list);
 
   const std::vector<int> parents = selection.parents(groupbit, 0);
   const bigint before = atom->natoms;
-  const bigint split = splitter.split(parents, list);
+  const bigint split = splitter.split(parents);
   if (comm->me == 0)
     utils::logmesg(lmp, "sph_soil/refine: split {} particles into {}: {} -> {} atoms\n", split,
                    split * (domain->dimension == 3 ? 8 : 4), before, atom->natoms);

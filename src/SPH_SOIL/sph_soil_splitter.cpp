@@ -13,10 +13,10 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
-#include "neigh_list.h"
 #include "pair_sph_soil.h"
 #include "soil_constitutive.h"
 #include "soil_material.h"
+#include "soil_neighbours.h"
 #include "soil_split.h"
 
 #include <algorithm>
@@ -90,11 +90,13 @@ double SPHSoilSplitter::spacing(int i) const
 }
 
 /* ----------------------------------------------------------------------
-   CSPM average of the state at `position` over the parent's neighbours of its type
+   CSPM average of the state at `position` over the atoms of the parent's type whose support
+   reaches it (the parent's own included): every such atom lies within the kernel's support
+   at the largest smoothing length, `reach`, of the position; `near` has them binned
 ------------------------------------------------------------------------- */
 
-void SPHSoilSplitter::interpolate(int parent, const double *position, NeighList *list,
-                                  double *state) const
+void SPHSoilSplitter::interpolate(int parent, const double *position, const CellGrid &near,
+                                  double reach, double *state) const
 {
   const int dimension = domain->dimension;
   double **x = atom->x;
@@ -103,7 +105,8 @@ void SPHSoilSplitter::interpolate(int parent, const double *position, NeighList 
   const int itype = type[parent];
 
   CspmSum<NSTATE> sum(pair->kernel_kind());
-  auto add = [&](int j) {
+  near.for_each_near(position, reach, [&](int j) {
+    if (type[j] != itype) return;
     const double dx = position[0] - x[j][0], dy = position[1] - x[j][1],
                  dz = position[2] - x[j][2];
     double f[NSTATE];
@@ -112,15 +115,9 @@ void SPHSoilSplitter::interpolate(int parent, const double *position, NeighList 
       f[1 + k] = avec->stress[j][k];
       f[7 + k] = avec->total_strain[j][k];
     }
+    // (the kernel is 0 beyond the support: such atoms add nothing)
     sum.add(dimension, rmass[j] / rho[j], std::sqrt(dx * dx + dy * dy + dz * dz), h[j], f);
-  };
-  add(parent);
-  const int *neighbours = list->firstneigh[parent];
-  const int count = list->numneigh[parent];
-  for (int jj = 0; jj < count; jj++) {
-    const int j = neighbours[jj] & NEIGHMASK;
-    if (type[j] == itype) add(j);
-  }
+  });
   if (!sum.result(state)) {
     // no neighbour reaches the daughter (separation far beyond the support): keep the parent's
     state[0] = rho[parent];
@@ -174,7 +171,7 @@ std::vector<tagint> SPHSoilSplitter::first_new_tags(const std::vector<int> &pare
 
 /* ---------------------------------------------------------------------- */
 
-bigint SPHSoilSplitter::split(const std::vector<int> &parents, NeighList *list)
+bigint SPHSoilSplitter::split(const std::vector<int> &parents)
 {
   if (!atom->tag_enable) error->all(FLERR, "{} requires atom IDs", who);
   bigint total = 0;
@@ -189,6 +186,15 @@ bigint SPHSoilSplitter::split(const std::vector<int> &parents, NeighList *list)
   const int count = daughter_count(dimension);
   const int nparents = (int) parents.size();
 
+  // owned and ghost atoms in cells of the largest support: a daughter's state comes from the
+  // atoms within it (the ghosts reach 2 max(h) + skin beyond the subdomain)
+  const int nall = atom->nlocal + atom->nghost;
+  double max_h = 0.0;
+  for (int i = 0; i < nall; i++) max_h = MAX(max_h, avec->smoothing_length[i]);
+  const double reach = kernel_support(pair->kernel_kind()) * max_h;
+  CellGrid near;
+  near.build(atom->x, nall, dimension, reach);
+
   // 1. every daughter's position and interpolated state, before anything changes
   std::vector<double> position((size_t) nparents * count * 3), state((size_t) nparents * count * NSTATE);
   for (int n = 0; n < nparents; n++) {
@@ -198,7 +204,7 @@ bigint SPHSoilSplitter::split(const std::vector<int> &parents, NeighList *list)
     for (int k = 0; k < count; k++) {
       double *xd = &position[((size_t) n * count + k) * 3];
       for (int a = 0; a < 3; a++) xd[a] = atom->x[i][a] + offsets[k][a];
-      interpolate(i, xd, list, &state[((size_t) n * count + k) * NSTATE]);
+      interpolate(i, xd, near, reach, &state[((size_t) n * count + k) * NSTATE]);
     }
   }
 

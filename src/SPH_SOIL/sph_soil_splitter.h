@@ -4,8 +4,8 @@
 
    Replaces owned particles by their daughters (soil_split.h): mass, h,
    level and position as specified, velocity copied, density, stress and
-   total strain interpolated by CSPM over the parent's neighbours of the
-   same type, every other per-atom value (including other fixes' per-atom
+   total strain interpolated by CSPM at the daughter's position over the
+   atoms of the parent's type, every other per-atom value (including other fixes' per-atom
    arrays, via AtomVec::copy) inherited from the parent.
 ------------------------------------------------------------------------- */
 
@@ -14,6 +14,7 @@
 
 #include "pointers.h"
 #include "soil_kernels.h"
+#include "soil_neighbours.h"
 
 #include <string>
 #include <vector>
@@ -45,21 +46,22 @@ class SPHSoilSplitter : protected Pointers {
   // ratio h / d of owned particle i, the r_a of the refinement analysis
   double smoothing_over_spacing(int i) const { return smoothing_length(i) / spacing(i); }
 
-  // Split the owned particles `parents`. `list` is a full neighbour list of the owned atoms,
-  // current with the ghosts. Refreshes the ghosts' state first (forward communication).
+  // Split the owned particles `parents`; the ghost atoms must be current (as after a
+  // reneighbouring). Refreshes the ghosts' state first (forward communication).
   // Daughters get new atom IDs after the largest existing one, ordered by the parents' IDs
   // and the daughter index, so they do not depend on the number of ranks. Afterwards the
   // ghost atoms are gone (nghost = 0): the caller must reneighbour before the next force
   // evaluation (fixes: next_reneighbor; commands: the next run's setup does it).
   // Returns the number of parents split on all ranks.
-  bigint split(const std::vector<int> &parents, class NeighList *list);
+  bigint split(const std::vector<int> &parents);
 
  private:
   std::string who;
   class AtomVecSPHSoil *avec;
   class PairSPHSoil *pair;
   double smoothing_length(int i) const;
-  void interpolate(int parent, const double *position, class NeighList *list, double *state) const;
+  void interpolate(int parent, const double *position, const SPHSoil::CellGrid &near, double reach,
+                   double *state) const;
   std::vector<tagint> first_new_tags(const std::vector<int> &parents, bigint &total);
 };
 

@@ -1,0 +1,120 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package: the pair style's own neighbour list (see the header)
+------------------------------------------------------------------------- */
+
+#include "soil_neighbours.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace SPHSoil {
+
+void CellGrid::build(const double *const *x, int n, int dimension, double cell)
+{
+  dims = dimension == 2 ? 2 : 3;
+  double hi[3] = {0.0, 0.0, 0.0};
+  for (int a = 0; a < 3; a++) {
+    lo_corner[a] = 0.0;
+    ncells[a] = 1;
+  }
+  if (n > 0)
+    for (int a = 0; a < dims; a++) lo_corner[a] = hi[a] = x[0][a];
+  for (int i = 0; i < n; i++)
+    for (int a = 0; a < dims; a++) {
+      lo_corner[a] = std::min(lo_corner[a], x[i][a]);
+      hi[a] = std::max(hi[a], x[i][a]);
+    }
+  // a sparse spread of atoms (few atoms in a large box) would ask for more cells than atoms:
+  // coarser cells then
+  for (;;) {
+    double total = 1.0;
+    for (int a = 0; a < dims; a++) total *= std::floor((hi[a] - lo_corner[a]) / cell) + 1.0;
+    if (total <= 8.0 * n + 64.0) break;
+    cell *= 2.0;
+  }
+  for (int a = 0; a < dims; a++) ncells[a] = (int) std::floor((hi[a] - lo_corner[a]) / cell) + 1;
+  inverse_cell = 1.0 / cell;
+
+  const std::size_t total_cells = (std::size_t) ncells[0] * ncells[1] * ncells[2];
+  std::vector<int> cell_of(n);
+  start.assign(total_cells + 1, 0);
+  atoms.resize(n);
+  for (int i = 0; i < n; i++) {
+    int c = 0;
+    for (int a = dims - 1; a >= 0; a--) c = c * ncells[a] + coordinate(x[i][a], a);
+    cell_of[i] = c;
+    start[c + 1]++;
+  }
+  for (std::size_t c = 0; c < total_cells; c++) start[c + 1] += start[c];
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int i = 0; i < n; i++) atoms[fill[cell_of[i]]++] = i;
+}
+
+std::size_t CellGrid::memory_bytes() const
+{
+  return sizeof(int) * (start.capacity() + atoms.capacity());
+}
+
+void NeighbourList::build(const NeighbourInput &in)
+{
+  const int nlocal = in.nlocal, nall = in.nall;
+  const bool three = in.dimension == 3;
+  offsets.assign(nlocal + 1, 0);
+  plain_ends.assign(nlocal, 0);
+  partners.clear();
+  if (nlocal == 0) return;
+
+  // cells of half the largest cutoff: a search of two cells each way checks (5/2)^D of the
+  // cutoff's volume against 3^D for cells of the whole cutoff
+  double max_h = 0.0;
+  for (int i = 0; i < nall; i++) max_h = std::max(max_h, in.h[i]);
+  const double max_cutoff = in.support * max_h + in.skin;
+  const double half_support = 0.5 * in.support;
+  grid.build(in.x, nall, in.dimension, 0.5 * max_cutoff);
+
+  // each owned atom's partners: plain ones straight into the list, mirror-wall ones after them
+  for (int i = 0; i < nlocal; i++) {
+    offsets[i] = (int) partners.size();
+    mirror_scratch.clear();
+    const double *xi = in.x[i];
+    const double hi_skin = half_support * in.h[i] + in.skin;
+    const int kind_i = in.kind_of_type[in.type[i]];
+    grid.for_each_near(xi, hi_skin + half_support * max_h, [&](int j) {
+      if (j < nlocal) {
+        if (j <= i) return;
+      } else if (in.newton) {
+        // a ghost pair is kept on one of its two ranks: where j lies above i
+        const double *xj = in.x[j];
+        if (three && xj[2] != xi[2]) {
+          if (xj[2] < xi[2]) return;
+        } else if (xj[1] != xi[1]) {
+          if (xj[1] < xi[1]) return;
+        } else if (xj[0] < xi[0]) {
+          return;
+        }
+      }
+      const int kind_j = in.kind_of_type[in.type[j]];
+      if (kind_i != NEIGHBOUR_SOIL && kind_j != NEIGHBOUR_SOIL) return;    // wall-wall
+      const double *xj = in.x[j];
+      const double dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = three ? xi[2] - xj[2] : 0.0;
+      const double cut = hi_skin + half_support * in.h[j];
+      if (dx * dx + dy * dy + dz * dz >= cut * cut) return;
+      if (kind_i == NEIGHBOUR_MIRROR_WALL || kind_j == NEIGHBOUR_MIRROR_WALL)
+        mirror_scratch.push_back(j);
+      else
+        partners.push_back(j);
+    });
+    plain_ends[i] = (int) partners.size();
+    partners.insert(partners.end(), mirror_scratch.begin(), mirror_scratch.end());
+  }
+  offsets[nlocal] = (int) partners.size();
+}
+
+std::size_t NeighbourList::memory_bytes() const
+{
+  return sizeof(int) * (offsets.capacity() + plain_ends.capacity() + partners.capacity() +
+                        mirror_scratch.capacity()) +
+      grid.memory_bytes();
+}
+
+}    // namespace SPHSoil

@@ -1,0 +1,100 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package: the pair style's own neighbour list (pure, no LAMMPS).
+
+   Each pair is listed with its own cutoff, the kernel's support at the mean
+   smoothing length h_ij = (h_i + h_j)/2 plus the skin, so that a refined
+   particle lists the neighbours of its own h, not those of the largest h in
+   the system. (LAMMPS's lists by size would do this through the atoms'
+   radius, but fix rigid takes particles with a radius for spheres.) A half list: every pair
+   once, on the rank that owns i, and for a ghost j with Newton's third law on
+   only on one of the two ranks (the one where j lies above i in z, then y,
+   then x, as LAMMPS's own half lists decide). Wall particles never pair with
+   each other. A particle's partners come sorted by kind: first those whose
+   pair is a plain SPH pair (soil, or a wall that extrapolates the soil's
+   state), then those whose pair goes through a mirror wall's image, so that
+   the pair loop needs no test of the partner's kind (doc/theory.rst 5.8).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SOIL_NEIGHBOURS_H
+#define LMP_SOIL_NEIGHBOURS_H
+
+#include <cstddef>
+#include <vector>
+
+namespace SPHSoil {
+
+// a particle's kind for the list: soil, a wall with mirror images, a wall that extrapolates
+enum NeighbourKind { NEIGHBOUR_SOIL = 0, NEIGHBOUR_MIRROR_WALL = 1, NEIGHBOUR_EXTRAPOLATED_WALL = 2 };
+
+struct NeighbourInput {
+  const double *const *x;    // positions of owned (0..nlocal-1) and ghost atoms (..nall-1)
+  const double *h;           // smoothing lengths, > 0
+  const int *type;           // atom types
+  const int *kind_of_type;   // NeighbourKind per type
+  int nlocal, nall;
+  int dimension;             // 2 (z ignored) or 3
+  double support;            // the kernel's support radius in units of h
+  double skin;               // added to every pair's cutoff support * h_ij
+  bool newton;               // Newton's third law for pairs with ghosts
+};
+
+// Atoms binned in cells (a counting sort), for searches within a distance of a point
+class CellGrid {
+ public:
+  // bin atoms 0..n-1 (the first `dimension` coordinates) in cells of about `cell` or larger
+  void build(const double *const *x, int n, int dimension, double cell);
+  // call f(j) for every atom j in the cells within `reach` of point p (a superset of the
+  // atoms within `reach`, in cell order)
+  std::size_t memory_bytes() const;
+  template <class F> void for_each_near(const double *p, double reach, F &&f) const
+  {
+    int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (int a = 0; a < dims; a++) {
+      lo[a] = coordinate(p[a] - reach, a);
+      hi[a] = coordinate(p[a] + reach, a);
+    }
+    for (int cz = lo[2]; cz <= hi[2]; cz++)
+      for (int cy = lo[1]; cy <= hi[1]; cy++) {
+        // the cells of a row are contiguous in `atoms`
+        const int row = (cz * ncells[1] + cy) * ncells[0];
+        for (int k = start[row + lo[0]]; k < start[row + hi[0] + 1]; k++) f(atoms[k]);
+      }
+  }
+
+ private:
+  int dims = 2;
+  int ncells[3] = {1, 1, 1};
+  double lo_corner[3] = {0.0, 0.0, 0.0}, inverse_cell = 1.0;
+  std::vector<int> start, atoms;
+  int coordinate(double value, int a) const
+  {
+    const double c = (value - lo_corner[a]) * inverse_cell;
+    if (!(c > 0.0)) return 0;    // (NaN too)
+    return c >= ncells[a] - 1 ? ncells[a] - 1 : (int) c;
+  }
+};
+
+class NeighbourList {
+ public:
+  // build the list of the owned atoms (an empty list for nlocal = 0)
+  void build(const NeighbourInput &in);
+
+  // owned atom i's partners are partners[first(i) .. end(i)); the plain ones up to
+  // plain_end(i), then the mirror-wall ones
+  int first(int i) const { return offsets[i]; }
+  int size() const { return (int) plain_ends.size(); }    // the owned atoms at the build
+  int plain_end(int i) const { return plain_ends[i]; }
+  int end(int i) const { return offsets[i + 1]; }
+  const int *partner_data() const { return partners.data(); }
+  std::size_t pairs() const { return partners.size(); }
+  std::size_t memory_bytes() const;
+
+ private:
+  std::vector<int> offsets, plain_ends, partners;
+  CellGrid grid;    // kept between builds
+  std::vector<int> mirror_scratch;
+};
+
+}    // namespace SPHSoil
+
+#endif
