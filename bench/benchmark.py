@@ -2,12 +2,13 @@
 """SPH_SOIL benchmark: particle-steps per second per core, side by side with LAMMPS's own
 sph/taitwater and smd/ulsph on the same 2D layout (in.bench_*), as ratios from one run.
 
-    bench/benchmark.py [--lmp build/lmp] [--repeat 1] [--json FILE] [--bars] [--callgrind]
+    bench/benchmark.py [--lmp build/lmp] [--repeat 1] [--json FILE] [--bars] [--callgrind] [--parallel]
 
 Each input runs on 1 MPI rank; the best of --repeat runs counts, the styles taking turns. --bars also times the short
 aluminium-bar example on all cores. --callgrind adds instructions per particle-step of each style, counted by
 valgrind's callgrind over 50 steps minus a run of 0 steps (the set-up): a figure that does not drift with the load
-of the machine. Prints JSON.
+of the machine. --parallel times a refined run of about 100k particles at two levels (in.bench_refined) on 1 and 2
+ranks: the parallel efficiency after splits, with LAMMPS's breakdown of where the time goes. Prints JSON.
 """
 import argparse
 import json
@@ -38,10 +39,17 @@ def run(lmp, infile, workdir, np=1, extra=()):
     neighs = (re.findall(r'^SPH_SOIL neighbours per atom: (\S+)', text, re.M) or
               re.findall(r'Ave neighs/atom = (\S+)', text))
     pair = re.findall(r'^Pair\s+\|\s+\S+\s+\|\s+(\S+)', text, re.M)
+    # LAMMPS's breakdown of the loop time: each section's average over ranks, as a fraction
+    sections = {}
+    for name in ('Pair', 'Neigh', 'Comm', 'Output', 'Modify', 'Other'):
+        found = re.findall(rf'^{name}\s+\|\s+\S+\s+\|\s+(\S+)', text, re.M)
+        if found:
+            sections[name.lower()] = float(found[-1]) / seconds
     return {'seconds': seconds, 'procs': procs, 'steps': steps, 'atoms': atoms,
             'particle_steps_per_second_per_core': atoms * steps / seconds / procs,
             'neighbours_per_atom': float(neighs[-1]) if neighs else None,
-            'pair_fraction': float(pair[-1]) / seconds if pair else None}
+            'pair_fraction': float(pair[-1]) / seconds if pair else None,
+            'time_fractions': sections}
 
 
 def instructions(lmp, infile, workdir, steps, extra=()):
@@ -86,6 +94,9 @@ def main():
     p.add_argument('--json', default=None)
     p.add_argument('--bars', action='store_true', help='also time the short aluminium-bar example')
     p.add_argument('--callgrind', action='store_true', help='also count instructions per particle-step')
+    p.add_argument('--parallel', action='store_true',
+                   help='also time the refined run (in.bench_refined, ~100k particles at two levels) '
+                        'on 1 and 2 ranks: the parallel efficiency after splits')
     a = p.parse_args()
     lmp = os.path.abspath(a.lmp)
 
@@ -107,6 +118,21 @@ def main():
                     np=ncores, extra=['-var', 'short', '1'])
             r['note'] = 'short mode (300 steps); atoms include wall particles'
             results['aluminium_bars_short'] = r
+        if a.parallel:
+            # 1 and 2 ranks in turn; the best of --repeat each
+            best = {}
+            for _ in range(a.repeat):
+                for np in (1, 2):
+                    r = run(lmp, os.path.join(HERE, 'in.bench_refined'), work, np=np)
+                    if np not in best or r['seconds'] < best[np]['seconds']:
+                        best[np] = r
+            efficiency = best[1]['seconds'] / (2 * best[2]['seconds'])
+            results['refined_parallel'] = {
+                'note': 'aluminium bars at 0.7 mm, the right half refined once (0.5, 0.5), fix balance; '
+                        'efficiency = t(1 rank) / (2 t(2 ranks))',
+                'one_rank': best[1], 'two_ranks': best[2], 'efficiency': efficiency}
+            print(f'benchmark: refined run, {best[1]["atoms"]} atoms: 2-rank efficiency {efficiency:.3f}',
+                  file=sys.stderr)
         if a.callgrind:
             for name, (infile, extra) in STYLES.items():
                 n = instructions_per_particle_step(lmp, os.path.join(HERE, infile), work,

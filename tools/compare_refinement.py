@@ -22,7 +22,8 @@ for each run, reports
     compression alone brings it to about 0.85; pairs at a third of it only form when particles
     clump (the compressive instability that the paper reports as clumps and cracks).
 Writes doc/refinement_comparison.json, doc/refinement_comparison.rst (tables) and the pictures
-doc/img/refinement_<problem>_frames.png (one row per run) and _surface.png.
+doc/img/refinement_<problem>_frames.png (one row per run), _surface.png and _cost.png (accuracy
+against cost: RMS vs fine against the wall time as a fraction of the fine run's).
 
   tools/compare_refinement.py --dir examples/refinement [bars] [collapse]
 """
@@ -50,7 +51,8 @@ PROBLEMS = {
 PAIRS = [('0.5', '0.5'), ('0.55', '0.5'), ('0.55', '0.6'), ('0.55', '0.7')]
 RUNS = ([('coarse', 'coarse'), ('fine', 'fine (static 0.5, 0.5)')] +
         [(f'dynamic_{e}_{a}', f'dynamic ({e}, {a})') for e, a in PAIRS] +
-        [(f'dynamic_{e}_{a}_h0', f'dynamic ({e}, {a}), viscosity_h0') for e, a in PAIRS])
+        [(f'dynamic_{e}_{a}_h0', f'dynamic ({e}, {a}), viscosity_h0') for e, a in PAIRS] +
+        [(f'dynamic_0.5_0.5_t{t}', f'dynamic (0.5, 0.5), threshold {t}') for t in ('0.1', '0.2')])
 
 
 def read_log(path):
@@ -215,6 +217,41 @@ def surface_figure(problem, profiles, root, out):
     plt.close(fig)
 
 
+def cost_figure(problem, results, out):
+    """Accuracy against cost: each run's surface RMS from the fine run's against its wall time
+    as a fraction of the fine run's, the paper's configuration (dynamic (0.5, 0.5), threshold
+    0.05) marked."""
+    fine = results.get('fine', {}).get('wall_seconds')
+    points = [(key, label, r) for key, label in RUNS for r in [results.get(key)]
+              if r and r.get('completed') and r.get('surface_rms_vs_fine_m') is not None and key != 'fine']
+    if not fine or not points:
+        return
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(8, 4.6))
+    for key, label, r in points:
+        x, y = r['wall_seconds'] / fine, 1000 * r['surface_rms_vs_fine_m']
+        paper = key == 'dynamic_0.5_0.5'
+        marker = 's' if key == 'coarse' else ('*' if paper else ('^' if key.endswith('_h0') else 'o'))
+        ax.plot(x, y, marker, ms=14 if paper else 8, color='C3' if paper else ('k' if key == 'coarse' else 'C0'))
+        ax.annotate(label + (' (the paper\'s)' if paper else ''), (x, y), xytext=(6, 3),
+                    textcoords='offset points', fontsize=7)
+    coarse = results.get('coarse', {}).get('surface_rms_vs_fine_m')
+    if coarse:
+        ax.axhline(500 * coarse, color='grey', lw=0.8, ls='--')
+        ax.text(1.0, 500 * coarse, ' half the coarse run\'s RMS', fontsize=7, va='bottom', ha='right')
+    ax.axvline(0.35, color='grey', lw=0.8, ls=':')
+    ax.text(0.35, ax.get_ylim()[1], ' 0.35 of the fine run\'s time', fontsize=7, va='top')
+    ax.set_xlim(0.0, 1.05)
+    ax.set_xlabel('wall time / fine run\'s wall time')
+    ax.set_ylabel('final surface RMS from the fine run\'s (mm)')
+    ax.set_title(PROBLEMS[problem]['title'] + ': accuracy against cost')
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+
+
 def table(problem, results):
     cols = [('run', 'run', '{}'), ('wall_seconds', 'wall (s)', '{:.0f}'),
             ('wall_us_per_particle_step', 'us/particle-step', '{:.3f}'), ('peak_particles', 'peak N', '{}'),
@@ -269,6 +306,7 @@ def main():
         summary[problem] = results
         frames_figure(a.dir, problem, os.path.join(root, 'doc', 'img', f'refinement_{problem}_frames.png'))
         surface_figure(problem, profiles, root, os.path.join(root, 'doc', 'img', f'refinement_{problem}_surface.png'))
+        cost_figure(problem, results, os.path.join(root, 'doc', 'img', f'refinement_{problem}_cost.png'))
     with open(jpath, 'w') as f:
         json.dump(summary, f, indent=1)
     print(json.dumps(summary, indent=1))
@@ -282,7 +320,8 @@ def main():
         title = PROBLEMS[problem]['title']
         page += [title, '"' * len(title), '', table(problem, summary[problem]), '',
                  f'.. image:: img/refinement_{problem}_frames.png', '   :width: 100%', '',
-                 f'.. image:: img/refinement_{problem}_surface.png', '   :width: 80%', '']
+                 f'.. image:: img/refinement_{problem}_surface.png', '   :width: 80%', '',
+                 f'.. image:: img/refinement_{problem}_cost.png', '   :width: 70%', '']
     # the discussion of the numbers is written by hand beside the generated page
     if os.path.exists(os.path.join(root, 'doc', 'refinement_comparison_notes.rst')):
         page += ['.. include:: refinement_comparison_notes.rst', '']

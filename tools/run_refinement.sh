@@ -2,6 +2,7 @@
 # The refinement comparison (issue 4, the paper's Section IV): coarse, fine and four dynamic
 # runs of each problem, then the table and pictures (tools/compare_refinement.py).
 #   tools/run_refinement.sh [bars|collapse ...]     (default: both)
+#   ONLY='regex' tools/run_refinement.sh ...        (only the runs whose name matches)
 # Runs in examples/refinement/ on all cores; skips a run whose final dump is newer than the
 # input and the binary (delete dump.*.final to force it).
 set -euo pipefail
@@ -15,23 +16,29 @@ problems=("$@")
 [ ${#problems[@]} -gt 0 ] || problems=(bars collapse)
 cd "$root/examples/refinement"
 for problem in "${problems[@]}"; do
-  # the paper's four pairs, each also with the viscosity that follows the level (h0)
+  # the paper's four pairs, each also with the viscosity that follows the level (h0), and
+  # (0.5, 0.5) at thresholds above the paper's 0.05
   runs=("coarse" "fine")
   for pair in "0.5 0.5" "0.55 0.5" "0.55 0.6" "0.55 0.7"; do runs+=("dynamic $pair 0"); done
   for pair in "0.5 0.5" "0.55 0.5" "0.55 0.6" "0.55 0.7"; do runs+=("dynamic $pair 1"); done
+  for threshold in 0.1 0.2; do runs+=("dynamic 0.5 0.5 0 $threshold"); done
   for run in "${runs[@]}"; do
     set -- $run
-    mode=$1 eps=${2:-0.5} alpha=${3:-0.5} h0=${4:-0}
+    mode=$1 eps=${2:-0.5} alpha=${3:-0.5} h0=${4:-0} threshold=${5:-0.05}
     name=${problem}_${mode}
     [ "$mode" = dynamic ] && name=${problem}_dynamic_${eps}_${alpha}
     [ "$h0" = 1 ] && name=${name}_h0
+    [ "$threshold" != 0.05 ] && name=${name}_t${threshold}
+    # ONLY=regex: just the runs whose name matches
+    if [ -n "${ONLY:-}" ] && ! [[ $name =~ $ONLY ]]; then continue; fi
     if [ -f "dump.$name.final" ] && [ "dump.$name.final" -nt in.refinement ] && [ "dump.$name.final" -nt "$build/lmp" ]; then
       echo "== $name: up to date"; continue
     fi
     echo "== $name"
     rm -f frame_${name}_*.png
     mpirun -np "$np" "$build/lmp" -in in.refinement -var problem "$problem" -var mode "$mode" \
-      -var eps "$eps" -var alpha "$alpha" -var h0 "$h0" -log "log.$name" -screen none \
+      -var eps "$eps" -var alpha "$alpha" -var h0 "$h0" -var threshold "$threshold" \
+      -log "log.$name" -screen none \
       || echo "== $name stopped with an error (see log.$name)"
   done
 done

@@ -78,6 +78,18 @@ class SoilPhysics : public LAMMPSTest {
     });
   }
 
+  // from a cleared LAMMPS: the patch with the shear flow of the tests and the run set-up
+  void new_periodic_patch()
+  {
+    HIDE_OUTPUT([&] {
+      command("clear");
+      command("units si");
+      command("variable vx atom 0.02*sin(2*PI*y/0.16)");
+    });
+    periodic_patch();
+    soil_run_setup();
+  }
+
   void soil_run_setup()
   {
     HIDE_OUTPUT([&] {
@@ -125,13 +137,7 @@ TEST_F(SoilPhysics, WendlandKernelRunConservesMomentum)
   expect_mass_and_momentum_conserved(before, after);
   const double wendland_energy = after[7];
 
-  HIDE_OUTPUT([&] {
-    command("clear");
-    command("units si");
-    command("variable vx atom 0.02*sin(2*PI*y/0.16)");
-  });
-  periodic_patch();
-  soil_run_setup();
+  new_periodic_patch();
   HIDE_OUTPUT([&] { command("run 500 post no"); });
   EXPECT_NE(totals()[7], wendland_energy);
 }
@@ -502,13 +508,7 @@ TEST_F(SoilPhysics, ViscosityH0GivesEveryPairTheDissipationOfTheReferenceSmoothi
   // alpha = beta = 1 at the reference h0 = 0.024 is the plain one with alpha = 2, beta = 4
   // (Monaghan's mu grows with h: doc/theory.rst 5.9), and not the plain one with alpha = beta = 1
   auto forces = [&](const std::string &pair_style) {
-    HIDE_OUTPUT([&] {
-      command("clear");
-      command("units si");
-      command("variable vx atom 0.02*sin(2*PI*y/0.16)");
-    });
-    periodic_patch();
-    soil_run_setup();
+    new_periodic_patch();
     HIDE_OUTPUT([&] {
       command("velocity all set v_vx v_vx NULL units box");
       command(pair_style);

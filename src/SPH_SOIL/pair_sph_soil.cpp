@@ -777,9 +777,10 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
     for (int a = 0; a < DIMENSION; a++) normal_distance += partner.dx[a] * normal[a];
     approach = vn * normal_distance;
   }
-  pair_force<DIMENSION>(partner, approach, r2, hij, SPHSoil::viscosity_length(viscosity_h0, SPHSoil::viscosity_h_weight(viscosity_h0), hij),
-                        c_ij, viscosity_alpha, viscosity_beta,
-                        ps[P_MASS] * pw[P_MASS], force_on_soil);
+  const double viscosity_h =
+      SPHSoil::viscosity_length(viscosity_h0, SPHSoil::viscosity_h_weight(viscosity_h0), hij);
+  pair_force<DIMENSION>(partner, approach, r2, hij, viscosity_h, c_ij, viscosity_alpha,
+                        viscosity_beta, ps[P_MASS] * pw[P_MASS], force_on_soil);
   const double mw = pw[P_MASS];
   if (update_wall) {
     double *ow = sums + (size_t) wall * SUM_ROW<DIMENSION>();
@@ -861,7 +862,10 @@ template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS> void PairSPHSoil:
       double dv[3], stress_sum[6];
       for (int a = 0; a < D; a++) {
         dv[a] = vi[a] - pj[P_V + a];
-        for (int b = a; b < D; b++) stress_sum[voigt_index(a, b)] = si[voigt_index(a, b)] + sj[voigt_index(a, b)];
+        for (int b = a; b < D; b++) {
+          const int k = voigt_index(a, b);
+          stress_sum[k] = si[k] + sj[k];
+        }
       }
       if (ARTIFICIAL_STRESS && (artificial_type[itype] || artificial_type[jtype])) {
         // (R_i + R_j) (W(r) / W(spacing))^4
@@ -876,9 +880,9 @@ template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS> void PairSPHSoil:
           }
       }
       SPHSoil::PlainPairTerms<D> terms;
-      SPHSoil::plain_pair<D>(g.dx, g.r2, g.hij, SPHSoil::viscosity_length(h0, h0_weight, g.hij), g.factor, dv,
-                             stress_sum, 0.5 * (rhoi + pj[P_RHO]), c_i[jtype], alpha,
-                             beta_viscosity, terms);
+      const double viscosity_h = SPHSoil::viscosity_length(h0, h0_weight, g.hij);
+      SPHSoil::plain_pair<D>(g.dx, g.r2, g.hij, viscosity_h, g.factor, dv, stress_sum,
+                             0.5 * (rhoi + pj[P_RHO]), c_i[jtype], alpha, beta_viscosity, terms);
 
       const double mj = pj[P_MASS], volume_j = pj[P_VOLUME], mass_product = mi * mj;
       double *oj = out + (size_t) j * ROW;

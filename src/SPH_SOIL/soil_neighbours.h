@@ -24,7 +24,11 @@
 namespace SPHSoil {
 
 // a particle's kind for the list: soil, a wall with mirror images, a wall that extrapolates
-enum NeighbourKind { NEIGHBOUR_SOIL = 0, NEIGHBOUR_MIRROR_WALL = 1, NEIGHBOUR_EXTRAPOLATED_WALL = 2 };
+enum NeighbourKind {
+  NEIGHBOUR_SOIL = 0,
+  NEIGHBOUR_MIRROR_WALL = 1,
+  NEIGHBOUR_EXTRAPOLATED_WALL = 2
+};
 
 struct NeighbourInput {
   const double *const *x;    // positions of owned (0..nlocal-1) and ghost atoms (..nall-1)
