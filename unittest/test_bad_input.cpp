@@ -290,6 +290,8 @@ std::vector<BadInput> cases()
           "integrated): this fix moves nothing");
 
   // ---- warnings of the pair style at a run
+  warning("NeighModifyExcludeIgnored", "walls", {"neigh_modify exclude type 2 2"}, "run 0 post no",
+          "Pair sph/soil builds its own neighbour list: neigh_modify exclude has no effect on it");
   warning("DensityFarFromReference", "walls", {"sph_soil/set soil density 2000 mass 0.2"},
           "run 0 post no",
           "Pair sph/soil: 80 soil particle(s) have a density more than 10% away from their material's "

@@ -159,6 +159,19 @@ TEST_F(Refinement, RefinedParticlesListThePartnersOfTheirOwnSmoothingLength)
   const double uniformly_fine = mean_partners(1);
   setup("half");
   const double coarse = mean_partners(0), daughters = mean_partners(1);
+  // compute sph/soil/atom neighbours gives the same count per particle
+  HIDE_OUTPUT([&] {
+    command("compute partners all sph/soil/atom neighbours");
+    command("compute total all reduce sum c_partners");
+    command("thermo_style custom step c_total");
+    command("run 0 post no");
+    command("variable total equal c_total");
+  });
+  double listed = 0.0, listed_all = 0.0;
+  auto pair = dynamic_cast<PairSPHSoil *>(lmp->force->pair);
+  for (int i = 0; i < lmp->atom->nlocal; i++) listed += pair->listed_partners(i);
+  MPI_Allreduce(&listed, &listed_all, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(get_variable_value("total"), listed_all);
   // a support of 2.4 spacings plus a skin of 0.5 fine spacings: about (4/3) pi 2.9^3 / 2 = 51
   EXPECT_NEAR(uniformly_fine, 51.0, 8.0);
   EXPECT_LT(daughters, 1.2 * uniformly_fine);

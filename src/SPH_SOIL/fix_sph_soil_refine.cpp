@@ -13,7 +13,6 @@
 #include "group.h"
 #include "force.h"
 #include "modify.h"
-#include "neighbor.h"
 #include "pair_sph_soil.h"
 #include "region.h"
 #include "soil_constitutive.h"
@@ -23,7 +22,6 @@
 #include "sph_soil_input.h"
 #include "sph_soil_refine_criterion.h"
 #include "sph_soil_splitter.h"
-#include "math_const.h"
 #include "update.h"
 #include "utils.h"
 
@@ -34,7 +32,6 @@
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
-using MathConst::MY_PI;
 
 namespace {
 const char *const STYLE = "Fix sph/soil/refine";

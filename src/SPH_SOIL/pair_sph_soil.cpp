@@ -339,7 +339,8 @@ void PairSPHSoil::init_style()
   // no request of a LAMMPS neighbour list: the pair style builds its own (build_neighbours())
   // on LAMMPS's reneighbouring, whose ghost atoms and skin it uses; LAMMPS's exclusions apply
   // to LAMMPS's lists only
-  if (neighbor->exclude && comm->me == 0)
+  // (the exclusion lists themselves: Neighbor::init(), which sets `exclude`, runs after this)
+  if ((neighbor->nex_type || neighbor->nex_group || neighbor->nex_mol) && comm->me == 0)
     error->warning(FLERR, "Pair sph/soil builds its own neighbour list: neigh_modify exclude "
                           "has no effect on it");
 }
@@ -665,19 +666,6 @@ template <int DIMENSION> void PairSPHSoil::unpack_sums()
 }
 
 /* ----------------------------------------------------------------------
-   add the velocity-gradient term t^cd = (v_b - v_a)^c dW/dx_a^d, weighted, to a particle's
-   row of sums
-------------------------------------------------------------------------- */
-
-template <int DIMENSION>
-inline void PairSPHSoil::add_velocity_gradient(double *row, double weight, const double t[3][3])
-{
-  double *g = row + S_GRADIENT<DIMENSION>();
-  for (int c = 0; c < DIMENSION; c++)
-    for (int d = 0; d < DIMENSION; d++) g[c * DIMENSION + d] += weight * t[c][d];
-}
-
-/* ----------------------------------------------------------------------
    a pair's separation dx = x_i - x_j, r, h_ij and gradient factor (grad W = factor dx), from
    i's position and h and j's packed row; false beyond the support (the list has a skin)
 ------------------------------------------------------------------------- */
@@ -718,10 +706,7 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
                                                      const double dx[3], double r2, double hij,
                                                      double factor, double c_ij)
 {
-  using SPHSoil::PairPartner;
-  using SPHSoil::pair_density_rate;
-  using SPHSoil::pair_force;
-  using SPHSoil::pair_velocity_gradient;
+  constexpr int D = DIMENSION;
   const int newton_pair = force->newton_pair, nlocal = atom->nlocal;
   const bool update_soil = newton_pair || soil < nlocal;
   const bool update_wall = newton_pair || wall < nlocal;
@@ -731,12 +716,12 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   const double wall_distance = avec->wall_distance[wall];
   const int wall_type = atom->type[wall];
 
-  PairPartner partner;
+  // seen from the soil particle: x_s - x_w, and its distance beyond the wall plane
+  double separation[3] = {0.0, 0.0, 0.0};
   double ds = -wall_distance;
-  for (int a = 0; a < DIMENSION; a++) {
-    partner.dx[a] = sign * dx[a];
-    partner.grad[a] = factor * partner.dx[a];    // dW/dx_s
-    ds += partner.dx[a] * normal[a];
+  for (int a = 0; a < D; a++) {
+    separation[a] = sign * dx[a];
+    ds += separation[a] * normal[a];
   }
   const double beta = ds > 0.0 ? MIN(1.5, 1.0 + wall_distance / ds) : 1.5;
   // the image's stress: the soil particle's (no slip), its mirror image (free slip: no shear
@@ -745,53 +730,58 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   // normal part
   const int slip = type_wall_slip[wall_type];
   const double *ss = ps + P_STRESS;
+  double stress_sum[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   double share = 1.0;    // of the tangential velocity
   if (slip == SLIP_NONE) {
-    for (int a = 0; a < DIMENSION; a++)
-      for (int b = a; b < DIMENSION; b++)
-        partner.stress_sum[SPHSoil::voigt_index(a, b)] = 2.0 * ss[SPHSoil::voigt_index(a, b)];
+    for (int a = 0; a < D; a++)
+      for (int b = a; b < D; b++)
+        stress_sum[SPHSoil::voigt_index(a, b)] = 2.0 * ss[SPHSoil::voigt_index(a, b)];
   } else if (slip == SLIP_FREE) {
-    SPHSoil::mirrored_stress_sum(ss, normal, partner.stress_sum);
+    SPHSoil::mirrored_stress_sum(ss, normal, stress_sum);
     share = 0.0;
   } else {
-    share = SPHSoil::frictional_stress_sum(ss, normal, type_wall_friction[wall_type],
-                                           partner.stress_sum);
+    share = SPHSoil::frictional_stress_sum(ss, normal, type_wall_friction[wall_type], stress_sum);
   }
   double relative[3], vn = 0.0;
-  for (int a = 0; a < DIMENSION; a++) {
+  for (int a = 0; a < D; a++) {
     relative[a] = beta * (ps[P_V + a] - pw[P_V + a]);
     vn += relative[a] * normal[a];
   }
-  for (int a = 0; a < DIMENSION; a++)
-    partner.velocity[a] = share == 1.0 ? relative[a] : vn * normal[a];
-  const double rhos = ps[P_RHO];
-  partner.mean_density = rhos;
-  double approach, force_on_soil[3], t[3][3];
-  const double drho = pair_density_rate<DIMENSION>(partner, approach);
+  double dv[3] = {0.0, 0.0, 0.0}, approach = 0.0;
+  for (int a = 0; a < D; a++) {
+    dv[a] = share == 1.0 ? relative[a] : vn * normal[a];
+    approach += dv[a] * separation[a];
+  }
   // friction: the artificial viscosity sees only the normal approach, so that the traction
   // across the wall stays the Coulomb-limited one (with the sticking velocity it would add a
   // viscous drag that mu does not bound: a rough gate lifted at 1 m/s got 6 times the at-rest
   // force in its first step)
+  double viscous_approach = approach;
   if (slip == SLIP_FRICTION) {
     double normal_distance = 0.0;
-    for (int a = 0; a < DIMENSION; a++) normal_distance += partner.dx[a] * normal[a];
-    approach = vn * normal_distance;
+    for (int a = 0; a < D; a++) normal_distance += separation[a] * normal[a];
+    viscous_approach = vn * normal_distance;
   }
+  const double rhos = ps[P_RHO];
   const double viscosity_h =
       SPHSoil::viscosity_length(viscosity_h0, SPHSoil::viscosity_h_weight(viscosity_h0), hij);
-  pair_force<DIMENSION>(partner, approach, r2, hij, viscosity_h, c_ij, viscosity_alpha,
-                        viscosity_beta, ps[P_MASS] * pw[P_MASS], force_on_soil);
-  const double mw = pw[P_MASS];
+  SPHSoil::PairTerms<D> terms;
+  SPHSoil::pair_terms<D>(separation, r2, hij, viscosity_h, factor, dv, approach, viscous_approach,
+                         stress_sum, rhos, c_ij, viscosity_alpha, viscosity_beta, terms);
+
+  const double mw = pw[P_MASS], mass_product = ps[P_MASS] * mw;
   if (update_wall) {
-    double *ow = sums + (size_t) wall * SUM_ROW<DIMENSION>();
-    for (int a = 0; a < DIMENSION; a++) ow[S_FORCE + a] -= force_on_soil[a];
+    double *ow = sums + (size_t) wall * SUM_ROW<D>();
+    for (int a = 0; a < D; a++) ow[S_FORCE + a] -= mass_product * terms.force[a];
   }
   if (!update_soil) return;
-  double *os = sums + (size_t) soil * SUM_ROW<DIMENSION>();
-  os[S_DRHO<DIMENSION>()] += mw * drho;
-  for (int a = 0; a < DIMENSION; a++) os[S_FORCE + a] += force_on_soil[a];
-  pair_velocity_gradient<DIMENSION>(partner, t);
-  add_velocity_gradient<DIMENSION>(os, mw / rhos, t);
+  double *os = sums + (size_t) soil * SUM_ROW<D>();
+  os[S_DRHO<D>()] += mw * terms.density_rate;
+  for (int a = 0; a < D; a++) os[S_FORCE + a] += mass_product * terms.force[a];
+  // the image's volume: the wall particle's mass at the soil's density
+  const double volume = mw / rhos;
+  for (int c = 0; c < D; c++)
+    for (int d = 0; d < D; d++) os[S_GRADIENT<D>() + c * D + d] += volume * terms.gradient[c][d];
 }
 
 /* ----------------------------------------------------------------------
@@ -879,10 +869,13 @@ template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS> void PairSPHSoil:
             stress_sum[k] += weight * (ai[A_STRESS + k] + aj[A_STRESS + k]);
           }
       }
-      SPHSoil::PlainPairTerms<D> terms;
+      double approach = 0.0;
+      for (int a = 0; a < D; a++) approach += dv[a] * g.dx[a];
+      SPHSoil::PairTerms<D> terms;
       const double viscosity_h = SPHSoil::viscosity_length(h0, h0_weight, g.hij);
-      SPHSoil::plain_pair<D>(g.dx, g.r2, g.hij, viscosity_h, g.factor, dv, stress_sum,
-                             0.5 * (rhoi + pj[P_RHO]), c_i[jtype], alpha, beta_viscosity, terms);
+      SPHSoil::pair_terms<D>(g.dx, g.r2, g.hij, viscosity_h, g.factor, dv, approach, approach,
+                             stress_sum, 0.5 * (rhoi + pj[P_RHO]), c_i[jtype], alpha,
+                             beta_viscosity, terms);
 
       const double mj = pj[P_MASS], volume_j = pj[P_VOLUME], mass_product = mi * mj;
       double *oj = out + (size_t) j * ROW;

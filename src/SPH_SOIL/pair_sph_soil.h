@@ -148,8 +148,6 @@ class PairSPHSoil : public Pair {
   template <int DIMENSION>
   void mirror_wall_pair(int soil, int wall, double sign, const double dx[3], double r2, double hij,
                         double factor, double c_ij);
-  template <int DIMENSION>
-  static void add_velocity_gradient(double *row, double weight, const double t[3][3]);
   // with_kernel() calls it with the kernel type: picks the dimension and whether the loop
   // adds the artificial stress (compiled apart, so that the loop without it stays as lean)
   struct Evaluate {

@@ -10,11 +10,9 @@
      density rate     m_b (v_a - v_b) . grad W_ab
      acceleration     m_b (sigma_a/rho_a^2 + sigma_b/rho_b^2 - Pi_ab) grad W_ab
      velocity grad.   V_b (v_b - v_a) x grad W_ab
-   with Monaghan's viscosity Pi_ab for approaching pairs. Plain inline code
-   for the hot loop, reusable by a threaded or GPU variant of the loop. Three
-   functions rather than one, so that the loop can apply each part as soon as
-   it is computed: fewer values live at once (measured: one function holding
-   all three parts made the 2D loop 5% slower through register spills).
+   with Monaghan's viscosity Pi_ab for approaching pairs (pair_terms()), and the
+   images' stresses behind walls. Plain inline code for the hot loop, reusable by
+   a threaded or GPU variant of the loop.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SPH_SOIL_PAIR_TERM_H
@@ -23,15 +21,6 @@
 #include <cmath>
 
 namespace SPHSoil {
-
-// the pair's inputs, as seen from soil particle a
-struct PairPartner {
-  double dx[3];            // x_a - x_b
-  double grad[3];          // dW_ab/dx_a
-  double velocity[3];      // v_a - v_b
-  double stress_sum[6];    // sigma_a/rho_a^2 + sigma_b/rho_b^2 (Voigt; 2D uses xx yy xy)
-  double mean_density;     // (rho_a + rho_b)/2
-};
 
 // Monaghan's Pi_ab = (-alpha c mu + beta mu^2) / rhobar with mu = N / D, N = h_ab v_ab.x_ab,
 // D = r^2 + 0.01 h_ab^2, written over one division: N (beta N - alpha c D) / (D^2 rhobar)
@@ -58,91 +47,43 @@ inline double viscosity_length(double h0, double h_weight, double h)
   return h0 + h_weight * h;
 }
 
-// (v_a - v_b) . grad: the density rate per unit m_b; and (v_a - v_b) . (x_a - x_b), which says
-// whether they approach (for the viscosity)
-template <int DIMENSION>
-inline double pair_density_rate(const PairPartner &p, double &approach)
-{
-  double vdotgrad = 0.0, vdotx = 0.0;
-  for (int a = 0; a < DIMENSION; a++) {
-    vdotgrad += p.velocity[a] * p.grad[a];
-    vdotx += p.velocity[a] * p.dx[a];
-  }
-  approach = vdotx;
-  return vdotgrad;
-}
-
-// the force on a: m_a m_b (sigma_a/rho_a^2 + sigma_b/rho_b^2 - Pi_ab) grad, with the viscosity
-// only for approaching pairs (approach < 0)
-template <int DIMENSION>
-inline void pair_force(const PairPartner &p, double approach, double r2, double h,
-                       double viscosity_h, double sound_speed, double alpha, double beta,
-                       double mass_product, double force[3])
-{
-  double viscosity = 0.0;
-  if (approach < 0.0)
-    viscosity = monaghan_viscosity(alpha, beta, viscosity_h * approach, r2 + 0.01 * h * h,
-                                   p.mean_density, sound_speed);
-  const double *s = p.stress_sum;
-  const double *g = p.grad;
-  if (DIMENSION == 2) {
-    // written out: the 2D case is the one the paper's problems run
-    force[0] = mass_product * ((s[0] - viscosity) * g[0] + s[3] * g[1]);
-    force[1] = mass_product * (s[3] * g[0] + (s[1] - viscosity) * g[1]);
-  } else {
-    static const int voigt[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
-    for (int a = 0; a < DIMENSION; a++) {
-      double sum = -viscosity * g[a];
-      for (int b = 0; b < DIMENSION; b++) sum += s[voigt[a][b]] * g[b];
-      force[a] = mass_product * sum;
-    }
-  }
-}
-
-// t^ab = -(v_a - v_b)^a grad^b: the velocity gradient per unit V_b
-template <int DIMENSION>
-inline void pair_velocity_gradient(const PairPartner &p, double t[3][3])
-{
-  for (int a = 0; a < DIMENSION; a++)
-    for (int b = 0; b < DIMENSION; b++) t[a][b] = -p.velocity[a] * p.grad[b];
-}
-
 // The Voigt index of stress component (a, b): xx yy zz xy xz yz
 constexpr int voigt_index(int a, int b)
 {
   return a == b ? a : (a + b == 1 ? 3 : (a + b == 2 ? 4 : 5));
 }
 
-// A plain pair (two soil particles, or soil and a wall particle that extrapolates the soil's
-// state) in the form of the hot loop. With grad W = factor x_ab and the density rate, the
-// viscosity's approach and the velocity gradient all made of v_ab and x_ab, everything follows
-// from the separation, the factor, the velocity difference and the stress sum:
+// A pair's terms, as seen from soil particle a, in the form of the hot loop. With
+// grad W = factor x_ab, the density rate, the viscosity's approach and the velocity gradient are
+// all made of v_ab and x_ab, so everything follows from the separation, the factor, the
+// velocity difference and the stress sum:
 //   density rate per unit m_b     factor (v_ab . x_ab)
 //   force on a per unit m_a m_b   factor ((S - Pi_ab I) x_ab)
 //   velocity gradient             t^cd = -factor v_ab^c x_ab^d, per unit V_b
-// with S = sigma_a/rho_a^2 + sigma_b/rho_b^2 (Voigt) and Monaghan's Pi_ab for approaching
-// pairs (viscosity_h: viscosity_length()). Plain scalars with compile-time indices only: the compiler keeps the pair in
-// registers (the PairPartner form above, with the stress components through a table, kept
-// the pair in memory: 40% more instructions per pair).
-template <int DIMENSION> struct PlainPairTerms {
+// with S = sigma_a/rho_a^2 + sigma_b/rho_b^2 (Voigt) and Monaghan's Pi_ab for approaching pairs
+// (viscosity_h: viscosity_length()). b is another soil particle, a wall particle that
+// extrapolates the soil's state, or the image of a mirror wall particle (the pair style builds
+// its velocity and stress). `approach` = v_ab . x_ab; `viscous_approach` the part of it that the
+// viscosity sees: the same, except behind a frictional wall (its normal part). Plain scalars
+// with compile-time indices: the compiler keeps the pair in registers (a struct of the pair's
+// inputs with the stress components through a table kept it in memory: 40% more instructions).
+template <int DIMENSION> struct PairTerms {
   double density_rate;
   double force[DIMENSION];
   double gradient[DIMENSION][DIMENSION];
 };
 
 template <int DIMENSION>
-inline void plain_pair(const double dx[3], double r2, double h, double viscosity_h, double factor,
-                       const double dv[3], const double stress_sum[6], double mean_density,
-                       double sound_speed, double alpha, double beta,
-                       PlainPairTerms<DIMENSION> &out)
+inline void pair_terms(const double dx[3], double r2, double h, double viscosity_h, double factor,
+                       const double dv[3], double approach, double viscous_approach,
+                       const double stress_sum[6], double mean_density, double sound_speed,
+                       double alpha, double beta, PairTerms<DIMENSION> &out)
 {
-  double approach = 0.0;
-  for (int a = 0; a < DIMENSION; a++) approach += dv[a] * dx[a];
   out.density_rate = factor * approach;
   double viscosity = 0.0;
-  if (approach < 0.0)
-    viscosity = monaghan_viscosity(alpha, beta, viscosity_h * approach, r2 + 0.01 * h * h,
-                                   mean_density, sound_speed);
+  if (viscous_approach < 0.0)
+    viscosity = monaghan_viscosity(alpha, beta, viscosity_h * viscous_approach,
+                                   r2 + 0.01 * h * h, mean_density, sound_speed);
   for (int a = 0; a < DIMENSION; a++) {
     double sum = -viscosity * dx[a];
     for (int b = 0; b < DIMENSION; b++) sum += stress_sum[voigt_index(a, b)] * dx[b];
