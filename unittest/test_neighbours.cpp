@@ -1,6 +1,8 @@
 // The pair style's own neighbour list (soil_neighbours.h) against a brute-force search: every
-// pair within its own cutoff support * h_ij + skin listed once, wall pairs never, plain partners
-// before mirror-wall partners, ghosts on one of their two ranks.
+// pair within its own cutoff support * h_ij + skin (+ skin_per_h * h_ij) listed once, wall pairs
+// never, plain partners before mirror-wall partners, ghosts on one of their two ranks; a list
+// whose atoms have each moved less than half their own skin still holds every pair within the
+// support.
 
 #include "soil_neighbours.h"
 
@@ -45,7 +47,8 @@ Particles random_particles(int n, int ghosts, int dimension, unsigned seed)
 
 const int KIND_OF_TYPE[4] = {0, NEIGHBOUR_SOIL, NEIGHBOUR_MIRROR_WALL, NEIGHBOUR_EXTRAPOLATED_WALL};
 
-NeighbourInput input_of(const Particles &p, int dimension, double skin, bool newton)
+NeighbourInput input_of(const Particles &p, int dimension, double skin, bool newton,
+                        double skin_per_h = 0.0)
 {
   NeighbourInput in;
   in.x = p.rows.data();
@@ -57,27 +60,29 @@ NeighbourInput input_of(const Particles &p, int dimension, double skin, bool new
   in.dimension = dimension;
   in.support = 2.0;
   in.skin = skin;
+  in.skin_per_h = skin_per_h;
   in.newton = newton;
   return in;
 }
 
-bool within(const Particles &p, int i, int j, int dimension, double skin)
+bool within(const Particles &p, int i, int j, int dimension, double skin, double skin_per_h = 0.0)
 {
   double r2 = 0.0;
   for (int a = 0; a < dimension; a++) {
     const double d = p.coordinates[i][a] - p.coordinates[j][a];
     r2 += d * d;
   }
-  const double cut = 2.0 * 0.5 * (p.h[i] + p.h[j]) + skin;
+  const double hij = 0.5 * (p.h[i] + p.h[j]);
+  const double cut = 2.0 * hij + skin + skin_per_h * hij;
   return r2 < cut * cut;
 }
 
-void check_list(int dimension, bool newton, unsigned seed)
+void check_list(int dimension, bool newton, unsigned seed, double skin_per_h = 0.0)
 {
-  const double skin = 0.01;
+  const double skin = skin_per_h > 0.0 ? 0.0 : 0.01;
   const Particles p = random_particles(600, 150, dimension, seed);
   NeighbourList list;
-  list.build(input_of(p, dimension, skin, newton));
+  list.build(input_of(p, dimension, skin, newton, skin_per_h));
   ASSERT_EQ(list.size(), p.nlocal);
 
   std::set<std::pair<int, int>> listed;
@@ -86,7 +91,8 @@ void check_list(int dimension, bool newton, unsigned seed)
       const int j = list.partner_data()[jj];
       const int kind_i = KIND_OF_TYPE[p.type[i]], kind_j = KIND_OF_TYPE[p.type[j]];
       EXPECT_TRUE(kind_i == NEIGHBOUR_SOIL || kind_j == NEIGHBOUR_SOIL) << "a wall-wall pair";
-      EXPECT_TRUE(within(p, i, j, dimension, skin)) << i << " " << j << " beyond the cutoff";
+      EXPECT_TRUE(within(p, i, j, dimension, skin, skin_per_h))
+          << i << " " << j << " beyond the cutoff";
       const bool mirror = kind_i == NEIGHBOUR_MIRROR_WALL || kind_j == NEIGHBOUR_MIRROR_WALL;
       EXPECT_EQ(mirror, jj >= list.plain_end(i)) << "partners not sorted by kind";
       EXPECT_TRUE(listed.insert({std::min(i, j), std::max(i, j)}).second) << "listed twice";
@@ -102,7 +108,7 @@ void check_list(int dimension, bool newton, unsigned seed)
     for (int j = i + 1; j < nall; j++) {
       const int kind_i = KIND_OF_TYPE[p.type[i]], kind_j = KIND_OF_TYPE[p.type[j]];
       if (kind_i != NEIGHBOUR_SOIL && kind_j != NEIGHBOUR_SOIL) continue;
-      if (!within(p, i, j, dimension, skin)) continue;
+      if (!within(p, i, j, dimension, skin, skin_per_h)) continue;
       bool keep = true;
       if (j >= p.nlocal && newton) {
         const auto &xi = p.coordinates[i], &xj = p.coordinates[j];
@@ -124,6 +130,54 @@ TEST(NeighbourList, MatchesBruteForceIn2DWithNewton) { check_list(2, true, 1); }
 TEST(NeighbourList, MatchesBruteForceIn2DWithoutNewton) { check_list(2, false, 2); }
 TEST(NeighbourList, MatchesBruteForceIn3DWithNewton) { check_list(3, true, 3); }
 TEST(NeighbourList, MatchesBruteForceIn3DWithoutNewton) { check_list(3, false, 4); }
+TEST(NeighbourList, MatchesBruteForceWithASkinThatFollowsH)
+{
+  check_list(2, true, 5, 0.3);
+  check_list(3, false, 6, 0.3);
+}
+
+// the skin that follows h: every atom moved (in a random direction) by just under half its own
+// skin, every pair now within the support is still listed, and moved_beyond_skin() says no;
+// one atom moved by half its skin, it says yes
+TEST(NeighbourList, AtomsWithinHalfTheirSkinKeepEveryPairWithinTheSupport)
+{
+  for (int dimension = 2; dimension <= 3; dimension++) {
+    const double skin_per_h = 0.3;
+    Particles p = random_particles(800, 0, dimension, 10 + dimension);
+    NeighbourList list;
+    list.build(input_of(p, dimension, 0.0, true, skin_per_h));
+    std::set<std::pair<int, int>> listed;
+    for (int i = 0; i < p.nlocal; i++)
+      for (int jj = list.first(i); jj < list.end(i); jj++)
+        listed.insert({i, list.partner_data()[jj]});
+
+    const auto original = p.coordinates;
+    std::mt19937 random(99);
+    std::normal_distribution<double> direction(0.0, 1.0);
+    for (int i = 0; i < p.nlocal; i++) {
+      double step[3] = {direction(random), direction(random), dimension == 3 ? direction(random) : 0.0};
+      const double norm = std::sqrt(step[0] * step[0] + step[1] * step[1] + step[2] * step[2]);
+      for (int a = 0; a < dimension; a++)
+        p.coordinates[i][a] += 0.4999 * skin_per_h * p.h[i] * step[a] / norm;
+    }
+    EXPECT_FALSE(list.moved_beyond_skin(p.rows.data(), p.nlocal));
+    int within_support = 0;
+    for (int i = 0; i < p.nlocal; i++)
+      for (int j = i + 1; j < p.nlocal; j++) {
+        const int kind_i = KIND_OF_TYPE[p.type[i]], kind_j = KIND_OF_TYPE[p.type[j]];
+        if (kind_i != NEIGHBOUR_SOIL && kind_j != NEIGHBOUR_SOIL) continue;
+        if (!within(p, i, j, dimension, 0.0)) continue;
+        within_support++;
+        EXPECT_TRUE(listed.count({i, j})) << "pair " << i << " " << j << " lost within the support";
+      }
+    EXPECT_GT(within_support, 200);
+
+    for (int a = 0; a < 3; a++) p.coordinates[7][a] = original[7][a];    // (rows point in)
+    p.coordinates[7][1] += 0.5001 * skin_per_h * p.h[7];
+    EXPECT_TRUE(list.moved_beyond_skin(p.rows.data(), p.nlocal));
+    EXPECT_TRUE(list.moved_beyond_skin(p.rows.data(), p.nlocal - 1)) << "other atoms than built";
+  }
+}
 
 // a refined particle lists about the neighbours of its own smoothing length: in a lattice of
 // spacing d/2 and h/2 next to one of spacing d and h, the fine particles away from the coarse
@@ -171,4 +225,17 @@ TEST(NeighbourList, FineParticlesListTheNeighboursOfTheirOwnSmoothingLength)
   const double pi = 3.14159265358979;
   EXPECT_NEAR(coarse_mean, pi * std::pow(2.4 + 0.1, 2) / 2, 1.5);
   EXPECT_NEAR(fine_mean, pi * std::pow(2.4 + 0.2, 2) / 2, 1.5);
+
+  // a skin that follows h, 0.1 d for the coarse: the fine particles' reach in their spacings is
+  // the coarse ones' in theirs, and so is their partner count
+  list.build(input_of(p, 2, 0.0, true, 0.1 * d / h));
+  double counts[2] = {0.0, 0.0};
+  for (int i = 0; i < p.nlocal; i++) {
+    const double x = p.coordinates[i][0], y = p.coordinates[i][1];
+    if (y < 10 * d || y > 30 * d) continue;
+    if (x > 26 * d && x < 34 * d) counts[0] += list.end(i) - list.first(i);
+    if (x > 6 * d && x < 14 * d) counts[1] += list.end(i) - list.first(i);
+  }
+  EXPECT_NEAR(counts[0] / fine_count, pi * std::pow(2.4 + 0.1, 2) / 2, 1.5);
+  EXPECT_NEAR(counts[1] / coarse_count, pi * std::pow(2.4 + 0.1, 2) / 2, 1.5);
 }

@@ -8,6 +8,7 @@
 #include "fix.h"
 #include "force.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "pair_sph_soil.h"
 
 #include <algorithm>
@@ -140,14 +141,16 @@ TEST_F(Refinement, RefinedParticlesListThePartnersOfTheirOwnSmoothingLength)
     MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
     return global[0] / global[1];
   };
-  auto setup = [&](const std::string &refined) {
+  // the skin is that of the largest h, in proportion for the others (fix sph/soil present):
+  // a quarter of the spacing for every particle in both set-ups
+  auto setup = [&](const std::string &refined, double skin) {
     HIDE_OUTPUT([&] {
       command("clear");
       command("units si");
     });
     patch(3, 8, false);
     HIDE_OUTPUT([&] {
-      command("neighbor 0.0025 bin");
+      command(fmt::format("neighbor {} bin", skin));
       command("region half block INF 0.04 INF INF INF INF units box");
       command("group half region half");
       command("sph_soil/refine " + refined + " separation 0.5 smoothing 0.5");
@@ -155,9 +158,9 @@ TEST_F(Refinement, RefinedParticlesListThePartnersOfTheirOwnSmoothingLength)
       command("run 0 post no");
     });
   };
-  setup("all");
+  setup("all", 0.00125);
   const double uniformly_fine = mean_partners(1);
-  setup("half");
+  setup("half", 0.0025);
   const double coarse = mean_partners(0), daughters = mean_partners(1);
   // compute sph/soil/atom neighbours gives the same count per particle
   HIDE_OUTPUT([&] {
@@ -172,13 +175,64 @@ TEST_F(Refinement, RefinedParticlesListThePartnersOfTheirOwnSmoothingLength)
   for (int i = 0; i < lmp->atom->nlocal; i++) listed += pair->listed_partners(i);
   MPI_Allreduce(&listed, &listed_all, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
   EXPECT_EQ(get_variable_value("total"), listed_all);
-  // a support of 2.4 spacings plus a skin of 0.5 fine spacings: about (4/3) pi 2.9^3 / 2 = 51
-  EXPECT_NEAR(uniformly_fine, 51.0, 8.0);
+  // a support of 2.4 spacings plus a skin of 0.25 spacings: about (4/3) pi 2.65^3 / 2 = 39
+  EXPECT_NEAR(uniformly_fine, 39.0, 6.0);
   EXPECT_LT(daughters, 1.2 * uniformly_fine);
   EXPECT_GT(daughters, 0.8 * uniformly_fine);
   // the coarse particles next to the daughters list more (eight daughters where a coarse
   // particle was), but not eight times more
   EXPECT_LT(coarse, 4.0 * uniformly_fine);
+}
+
+// With fix sph/soil a daughter's skin is in proportion to its h, and LAMMPS reneighbours when
+// a particle has moved half its own skin: at every step of a shearing flow of the daughters
+// (the coarse half at rest, so that LAMMPS's own check, which knows the coarse skin only, would
+// reneighbour too late: without the daughters' request this test fails at step 25), every pair
+// within its support is in the list. Counted over all ranks: each pair between owned atoms
+// once, each pair with a ghost once for the two owned-ghost views it has (on one rank or two).
+TEST_F(Refinement, SkinsThatFollowHMissNoPairWithinTheSupport)
+{
+  patch(2, 12, true);
+  HIDE_OUTPUT([&] {
+    command("variable fast_x atom (x<0.06)*0.15*sin(2*PI*y/0.03)");
+    command("variable fast_y atom (x<0.06)*0.15*sin(2*PI*x/0.03)");
+    command("velocity all set v_fast_x v_fast_y NULL units box");
+    command("neighbor 0.0001 bin");
+    command("region half block INF 0.06 INF INF INF INF units box");
+    command("group half region half");
+    command("sph_soil/refine half separation 0.5 smoothing 0.5");
+    command("fix integrate all sph/soil cfl 0.1");
+    command("run 0 post no");
+  });
+  auto pair = dynamic_cast<PairSPHSoil *>(lmp->force->pair);
+  auto avec = dynamic_cast<AtomVecSPHSoil *>(lmp->atom->avec);
+  const bigint builds_at_start = lmp->neighbor->ncalls;
+  for (int step = 1; step <= 40; step++) {
+    HIDE_OUTPUT([&] { command("run 1 pre no post no"); });
+    double **x = lmp->atom->x;
+    const double *h = avec->smoothing_length;
+    const int nlocal = lmp->atom->nlocal, nall = nlocal + lmp->atom->nghost;
+    auto within_support = [&](int i, int j) {
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], reach = h[i] + h[j];
+      return dx * dx + dy * dy < reach * reach;
+    };
+    // twice the pairs, so that owned-ghost views count one half each
+    bigint twice[2] = {0, 0}, all[2];
+    const auto &list = pair->neighbour_list();
+    for (int i = 0; i < nlocal; i++) {
+      for (int jj = list.first(i); jj < list.end(i); jj++)
+        if (within_support(i, list.partner_data()[jj])) twice[0] += 2;
+      for (int j = 0; j < nall; j++)
+        if (j != i && within_support(i, j)) twice[1]++;
+    }
+    MPI_Allreduce(twice, all, 2, MPI_LMP_BIGINT, MPI_SUM, MPI_COMM_WORLD);
+    ASSERT_EQ(all[0], all[1]) << "pairs within the support missing from the list at step " << step;
+  }
+  // the daughters reneighbour after moving a quarter of the coarse skin (8 times here in 40
+  // steps), far less than at every step
+  const bigint builds = lmp->neighbor->ncalls - builds_at_start;
+  EXPECT_GT(builds, 5);
+  EXPECT_LT(builds, 20);
 }
 
 TEST_F(Refinement, SplitsConserveMassMomentumEnergyAndAngularMomentum)

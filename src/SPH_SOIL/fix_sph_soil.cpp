@@ -36,6 +36,9 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
     yielded_count(0), integrator_state(nullptr), allocated_rows(0), restore_pending(false)
 {
   time_integrate = 1;
+  // the pair style's skins follow h (reneighbour_if_skin_used())
+  force_reneighbor = 1;
+  next_reneighbor = -1;
   restart_global = 1;
   restart_peratom = 1;
   vector_flag = 1;
@@ -109,12 +112,12 @@ void FixSPHSoil::init()
   const int *mask = atom->mask;
   // the first fix sph/soil passes the walls' velocities on (a second would see vest = v and
   // take the walls' acceleration for 0)
-  passes_wall_velocities = true;
+  first_integrator = true;
   const int me = modify->find_fix(id);
   for (int ifix = 0; ifix < modify->nfix; ifix++) {
     const Fix *other = modify->fix[ifix];
     if (other == this || strcmp(other->style, "sph/soil") != 0) continue;
-    if (ifix < me) passes_wall_velocities = false;
+    if (ifix < me) first_integrator = false;
     const int otherbit = other->groupbit;
     const auto twice = SphSoilOffenders::find_offenders(
         lmp, [&](int i) { return (mask[i] & groupbit) && (mask[i] & otherbit); },
@@ -242,12 +245,30 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
 void FixSPHSoil::post_integrate()
 {
   walls_velocity_to_estimate(false);
+  reneighbour_if_skin_used();
+}
+
+/* ----------------------------------------------------------------------
+   The pair style's list gives a particle of smaller h a smaller skin, which LAMMPS's check
+   (one skin, the largest particles') does not know: LAMMPS reneighbours at this step if some
+   particle (soil or wall, moved by any fix) has moved half its own skin. The first fix
+   sph/soil does it, after every fix has moved its atoms and before Neighbor::decide(); not
+   while every particle has the largest h (then LAMMPS's check is this one).
+------------------------------------------------------------------------- */
+
+void FixSPHSoil::reneighbour_if_skin_used()
+{
+  if (!first_integrator || !pair->skin_check_needed()) return;
+  const int outdated = pair->neighbours_outdated() ? 1 : 0;
+  int anywhere = 0;
+  MPI_Allreduce(&outdated, &anywhere, 1, MPI_INT, MPI_MAX, world);
+  if (anywhere) next_reneighbor = update->ntimestep;
 }
 
 // vest holds the wall's velocity of the step before: the difference is its acceleration
 void FixSPHSoil::walls_velocity_to_estimate(bool start)
 {
-  if (!passes_wall_velocities) return;
+  if (!first_integrator) return;
   double **v = atom->v, **vest = atom->vest;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;

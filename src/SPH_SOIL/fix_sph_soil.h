@@ -75,8 +75,9 @@ class FixSPHSoil : public Fix {
   class PairSPHSoil *pair;
   std::vector<const SPHSoil::ConstitutiveModel *> model_of_type;    // owned by the pair style
   std::vector<int> wall_type;    // per type: 1 for the pair style's wall types
-  bool passes_wall_velocities;   // the first fix sph/soil does it for all walls
+  bool first_integrator;   // the first fix sph/soil does it for all walls, and the skin check
   void walls_velocity_to_estimate(bool start);
+  void reneighbour_if_skin_used();
   bigint yielded_count;
 
   // The integrator's own per-atom state, one row per atom (the current rates live in the atom

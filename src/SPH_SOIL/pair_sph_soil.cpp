@@ -50,7 +50,7 @@ PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     nmax_artificial(0), artificial(nullptr), free_slip(false),
     kernel(SPHSoil::KernelKind::cubic),
     sound_speed_ij(nullptr), max_h(0.0), avec(nullptr), warned_density(false),
-    warned_spacing(false), warned_coinciding(false), nmax_packed(0),
+    warned_spacing(false), warned_coinciding(false), smaller_h_anywhere(false), nmax_packed(0),
     packed(nullptr), sums(nullptr), has_extrapolated_walls(false), nmax_extrapolation(0),
     extrapolation_sums(nullptr), extrapolated_state(nullptr), walls_may_turn(false),
     integrator(nullptr)
@@ -347,7 +347,11 @@ void PairSPHSoil::init_style()
 
 /* ----------------------------------------------------------------------
    the pair list of the owned and ghost atoms, every pair within the kernel's support at h_ij
-   plus the neighbour skin (soil_neighbours.h)
+   plus its skin (soil_neighbours.h). neighbor's skin is that of the largest h, which with the
+   support sets the ghost cutoff. With fix sph/soil, which asks for a reneighbouring when a
+   particle has moved half its own skin, a pair's skin is in proportion to h_ij (a daughter's
+   skin in proportion to its spacing, as its parent's); without it, LAMMPS's check decides
+   alone and knows one skin, for all pairs (doc/theory.rst 5.8)
 ------------------------------------------------------------------------- */
 
 void PairSPHSoil::build_neighbours()
@@ -361,9 +365,21 @@ void PairSPHSoil::build_neighbours()
   input.nall = atom->nlocal + atom->nghost;
   input.dimension = domain->dimension;
   input.support = SPHSoil::kernel_support(kernel);
-  input.skin = neighbor->skin;
+  input.skin = skin_follows_h() ? 0.0 : neighbor->skin;
+  input.skin_per_h = skin_follows_h() ? neighbor->skin / max_h : 0.0;
   input.newton = force->newton_pair != 0;
   neighbours.build(input);
+
+  int smaller_h = 0, anywhere = 0;
+  for (int i = 0; i < input.nlocal && !smaller_h; i++)
+    if (input.h[i] < max_h) smaller_h = 1;
+  MPI_Allreduce(&smaller_h, &anywhere, 1, MPI_INT, MPI_MAX, world);
+  smaller_h_anywhere = anywhere != 0;
+}
+
+bool PairSPHSoil::neighbours_outdated() const
+{
+  return skin_check_needed() && neighbours.moved_beyond_skin(atom->x, atom->nlocal);
 }
 
 /* ----------------------------------------------------------------------

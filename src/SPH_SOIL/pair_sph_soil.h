@@ -55,6 +55,14 @@ class PairSPHSoil : public Pair {
     return i < neighbours.size() ? neighbours.end(i) - neighbours.first(i) : 0;
   }
   double memory_usage() override;
+  // with fix sph/soil, each particle's skin follows its h (neighbor's skin is that of the
+  // largest h): the fix asks LAMMPS to reneighbour when neighbours_outdated() on some rank.
+  // Needed only while some particle has a smaller h than the largest (LAMMPS's own check
+  // watches the largest particles' skin): skin_check_needed(), the same on every rank
+  bool skin_follows_h() const { return integrator != nullptr; }
+  bool skin_check_needed() const { return skin_follows_h() && smaller_h_anywhere; }
+  bool neighbours_outdated() const;
+  const SPHSoil::NeighbourList &neighbour_list() const { return neighbours; }
   // whether the pair loop adds the artificial stress (known after init)
   bool artificial_stress_active() const { return has_artificial_stress; }
 
@@ -141,9 +149,10 @@ class PairSPHSoil : public Pair {
   };
   template <int DIMENSION, class Kernel>
   static bool pair_geometry(const double *xi, double hi, const double *pj, PairGeometry &g);
-  // the pair list, each pair with its own cutoff (soil_neighbours.h), rebuilt whenever LAMMPS
-  // reneighbours
+  // the pair list, each pair with its own cutoff and skin (soil_neighbours.h), rebuilt whenever
+  // LAMMPS reneighbours
   SPHSoil::NeighbourList neighbours;
+  bool smaller_h_anywhere;    // at the last build, some particle on some rank had h < max_h
   void build_neighbours();
   template <int DIMENSION>
   void mirror_wall_pair(int soil, int wall, double sign, const double dx[3], double r2, double hij,

@@ -59,17 +59,26 @@ void NeighbourList::build(const NeighbourInput &in)
 {
   const int nlocal = in.nlocal, nall = in.nall;
   const bool three = in.dimension == 3;
+  dims = three ? 3 : 2;
   offsets.assign(nlocal + 1, 0);
   plain_ends.assign(nlocal, 0);
   partners.clear();
+  x_at_build.resize((std::size_t) dims * nlocal);
+  move_limit2.resize(nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    for (int a = 0; a < dims; a++) x_at_build[(std::size_t) dims * i + a] = in.x[i][a];
+    const double half_skin = 0.5 * (in.skin + in.skin_per_h * in.h[i]);
+    move_limit2[i] = half_skin * half_skin;
+  }
   if (nlocal == 0) return;
 
+  // a pair's cutoff is reach_per_h (h_i + h_j) + skin
+  const double reach_per_h = 0.5 * (in.support + in.skin_per_h);
   // cells of half the largest cutoff: a search of two cells each way checks (5/2)^D of the
   // cutoff's volume against 3^D for cells of the whole cutoff
   double max_h = 0.0;
   for (int i = 0; i < nall; i++) max_h = std::max(max_h, in.h[i]);
-  const double max_cutoff = in.support * max_h + in.skin;
-  const double half_support = 0.5 * in.support;
+  const double max_cutoff = 2.0 * reach_per_h * max_h + in.skin;
   grid.build(in.x, nall, in.dimension, 0.5 * max_cutoff);
 
   // each owned atom's partners: plain ones straight into the list, mirror-wall ones after them
@@ -77,9 +86,9 @@ void NeighbourList::build(const NeighbourInput &in)
     offsets[i] = (int) partners.size();
     mirror_scratch.clear();
     const double *xi = in.x[i];
-    const double hi_skin = half_support * in.h[i] + in.skin;
+    const double hi_skin = reach_per_h * in.h[i] + in.skin;
     const int kind_i = in.kind_of_type[in.type[i]];
-    grid.for_each_near(xi, hi_skin + half_support * max_h, [&](int j) {
+    grid.for_each_near(xi, hi_skin + reach_per_h * max_h, [&](int j) {
       if (j < nlocal) {
         if (j <= i) return;
       } else if (in.newton) {
@@ -97,7 +106,7 @@ void NeighbourList::build(const NeighbourInput &in)
       if (kind_i != NEIGHBOUR_SOIL && kind_j != NEIGHBOUR_SOIL) return;    // wall-wall
       const double *xj = in.x[j];
       const double dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = three ? xi[2] - xj[2] : 0.0;
-      const double cut = hi_skin + half_support * in.h[j];
+      const double cut = hi_skin + reach_per_h * in.h[j];
       if (dx * dx + dy * dy + dz * dz >= cut * cut) return;
       if (kind_i == NEIGHBOUR_MIRROR_WALL || kind_j == NEIGHBOUR_MIRROR_WALL)
         mirror_scratch.push_back(j);
@@ -110,11 +119,24 @@ void NeighbourList::build(const NeighbourInput &in)
   offsets[nlocal] = (int) partners.size();
 }
 
+bool NeighbourList::moved_beyond_skin(const double *const *x, int nlocal) const
+{
+  if (nlocal != size()) return true;
+  for (int i = 0; i < nlocal; i++) {
+    const double *built = &x_at_build[(std::size_t) dims * i];
+    double moved2 = 0.0;
+    for (int a = 0; a < dims; a++) moved2 += (x[i][a] - built[a]) * (x[i][a] - built[a]);
+    // (a NaN position is the integrator's to report: not a reason to reneighbour)
+    if (moved2 >= move_limit2[i]) return true;
+  }
+  return false;
+}
+
 std::size_t NeighbourList::memory_bytes() const
 {
   return sizeof(int) * (offsets.capacity() + plain_ends.capacity() + partners.capacity() +
                         mirror_scratch.capacity()) +
-      grid.memory_bytes();
+      sizeof(double) * (x_at_build.capacity() + move_limit2.capacity()) + grid.memory_bytes();
 }
 
 }    // namespace SPHSoil

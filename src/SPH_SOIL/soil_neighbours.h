@@ -2,7 +2,7 @@
    SPH_SOIL package: the pair style's own neighbour list (pure, no LAMMPS).
 
    Each pair is listed with its own cutoff, the kernel's support at the mean
-   smoothing length h_ij = (h_i + h_j)/2 plus the skin, so that a refined
+   smoothing length h_ij = (h_i + h_j)/2 plus the pair's skin, so that a refined
    particle lists the neighbours of its own h, not those of the largest h in
    the system. (LAMMPS's lists by size would do this through the atoms'
    radius, but fix rigid takes particles with a radius for spheres.) A half list: every pair
@@ -13,6 +13,11 @@
    pair is a plain SPH pair (soil, or a wall that extrapolates the soil's
    state), then those whose pair goes through a mirror wall's image, so that
    the pair loop needs no test of the partner's kind (doc/theory.rst 5.8).
+
+   The skin may follow h too: a pair's skin is skin + skin_per_h h_ij, and the
+   list stays valid while every atom i has moved less than half of its own
+   skin, skin + skin_per_h h_i (the two halves of a pair add up to the pair's
+   skin). moved_beyond_skin() tells when that no longer holds.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SOIL_NEIGHBOURS_H
@@ -38,7 +43,8 @@ struct NeighbourInput {
   int nlocal, nall;
   int dimension;             // 2 (z ignored) or 3
   double support;            // the kernel's support radius in units of h
-  double skin;               // added to every pair's cutoff support * h_ij
+  double skin;               // added to every pair's cutoff support * h_ij ...
+  double skin_per_h = 0.0;   // ... and so is skin_per_h * h_ij
   bool newton;               // Newton's third law for pairs with ghosts
 };
 
@@ -92,9 +98,15 @@ class NeighbourList {
   const int *partner_data() const { return partners.data(); }
   std::size_t pairs() const { return partners.size(); }
   std::size_t memory_bytes() const;
+  // whether some owned atom has moved half its own skin or more since the build (then a pair
+  // may have come within the support unlisted), or the owned atoms are not those of the build
+  bool moved_beyond_skin(const double *const *x, int nlocal) const;
 
  private:
   std::vector<int> offsets, plain_ends, partners;
+  int dims = 2;
+  std::vector<double> x_at_build;    // owned atoms' positions, dims per atom
+  std::vector<double> move_limit2;   // (half the atom's skin)^2
   CellGrid grid;    // kept between builds
   std::vector<int> mirror_scratch;
 };
