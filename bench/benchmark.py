@@ -3,12 +3,18 @@
 sph/taitwater and smd/ulsph on the same 2D layout (in.bench_*), as ratios from one run.
 
     bench/benchmark.py [--lmp build/lmp] [--repeat 1] [--json FILE] [--bars] [--callgrind] [--parallel]
+                       [--refinement]
 
 Each input runs on 1 MPI rank; the best of --repeat runs counts, the styles taking turns. --bars also times the short
 aluminium-bar example on all cores. --callgrind adds instructions per particle-step of each style, counted by
 valgrind's callgrind over 50 steps minus a run of 0 steps (the set-up): a figure that does not drift with the load
 of the machine. --parallel times a refined run of about 100k particles at two levels (in.bench_refined) on 1 and 2
-ranks: the parallel efficiency after splits, with LAMMPS's breakdown of where the time goes. Prints JSON.
+ranks: the parallel efficiency after splits, with LAMMPS's breakdown of where the time goes. --refinement adds, for
+the aluminium bars at the comparison's spacing, the instructions per particle-step and per soil particle-step of the
+coarse and the statically refined (fine) lattice (callgrind, 40 steps minus 0: what refinement costs per particle,
+free of the load of the machine), and the cost figures of the latest refinement comparison (doc/
+refinement_comparison.json, written by tools/run_refinement.sh, an hour on 2 cores: not rerun here), each run's wall
+time per particle-step against the coarse run's. Prints JSON.
 """
 import argparse
 import json
@@ -57,7 +63,8 @@ def instructions(lmp, infile, workdir, steps, extra=()):
     out = os.path.join(workdir, f'callgrind.{steps}')
     cmd = ['valgrind', '--tool=callgrind', f'--callgrind-out-file={out}', lmp, '-in', infile,
            '-log', 'none', '-screen', 'none', '-var', 'steps', str(steps)] + list(extra)
-    subprocess.run(cmd, cwd=workdir, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    env = dict(os.environ, LAMMPS_POTENTIALS=os.path.join(ROOT, 'potentials'))
+    subprocess.run(cmd, cwd=workdir, env=env, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     for line in open(out):
         if line.startswith('summary:') or line.startswith('totals:'):
             return int(line.split()[1])
@@ -87,6 +94,48 @@ def machine():
     return {'cores': os.cpu_count(), 'cpu': model}
 
 
+def refinement_costs(lmp, work):
+    """Instructions per particle-step of the bars, coarse and fine (examples/refinement/in.refinement -var steps N),
+    and the latest comparison's wall times per particle-step relative to the coarse run's."""
+    infile = os.path.join(ROOT, 'examples', 'refinement', 'in.refinement')
+    out = {'note': 'aluminium bars, d = 2 mm; walls (1449 particles, never split) in both runs; the soil is '
+                   '5000 particles coarse and 20000 fine'}
+    walls = 1449
+    for mode, soil in (('coarse', 5000), ('fine', 20000)):
+        extra = ['-var', 'problem', 'bars', '-var', 'mode', mode]
+        per_step = (instructions(lmp, infile, work, 40, extra) - instructions(lmp, infile, work, 0, extra)) / 40
+        out[mode] = {'instructions_per_particle_step': per_step / (soil + walls),
+                     'instructions_per_soil_particle_step': per_step / soil}
+        print(f'benchmark: bars {mode}: {per_step / (soil + walls):.0f} instructions/particle-step, '
+              f'{per_step / soil:.0f} per soil particle-step', file=sys.stderr)
+    for key in ('instructions_per_particle_step', 'instructions_per_soil_particle_step'):
+        out['fine_to_coarse_' + key] = out['fine'][key] / out['coarse'][key]
+    comparison = os.path.join(ROOT, 'doc', 'refinement_comparison.json')
+    if os.path.exists(comparison):
+        with open(comparison) as f:
+            runs = json.load(f)
+        out['comparison'] = {}
+        for problem, entries in runs.items():
+            coarse = entries.get('coarse', {})
+            fine = entries.get('fine', {})
+            rows = {}
+            for key, e in entries.items():
+                row = {k: e.get(k) for k in ('run', 'wall_seconds', 'wall_us_per_particle_step',
+                                             'wall_us_per_soil_particle_step', 'surface_rms_vs_fine_m')}
+                for k in ('wall_us_per_particle_step', 'wall_us_per_soil_particle_step'):
+                    if e.get(k) and coarse.get(k):
+                        row[k + '_to_coarse'] = e[k] / coarse[k]
+                if e.get('wall_seconds') and fine.get('wall_seconds'):
+                    row['wall_seconds_to_fine'] = e['wall_seconds'] / fine['wall_seconds']
+                if e.get('surface_rms_vs_fine_m') is not None and coarse.get('surface_rms_vs_fine_m'):
+                    row['rms_vs_fine_to_coarse'] = e['surface_rms_vs_fine_m'] / coarse['surface_rms_vs_fine_m']
+                rows[key] = row
+            out['comparison'][problem] = rows
+        out['comparison_note'] = ('from doc/refinement_comparison.json (tools/run_refinement.sh, 2 ranks), not rerun '
+                                  'by this script')
+    return out
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument('--lmp', default=os.path.join(ROOT, 'build', 'lmp'))
@@ -97,6 +146,9 @@ def main():
     p.add_argument('--parallel', action='store_true',
                    help='also time the refined run (in.bench_refined, ~100k particles at two levels) '
                         'on 1 and 2 ranks: the parallel efficiency after splits')
+    p.add_argument('--refinement', action='store_true',
+                   help='also count the instructions of coarse and refined bars per (soil) particle-step and '
+                        'add the latest refinement comparison\'s cost figures')
     a = p.parse_args()
     lmp = os.path.abspath(a.lmp)
 
@@ -139,6 +191,9 @@ def main():
                                                    results[name]['atoms'], extra=extra)
                 results[name]['instructions_per_particle_step'] = n
                 print(f'benchmark: {name}: {n:.0f} instructions/particle-step', file=sys.stderr)
+
+        if a.refinement:
+            results['refinement'] = refinement_costs(lmp, work)
 
     ours = results['sph_soil']['particle_steps_per_second_per_core']
     summary = {
