@@ -33,11 +33,16 @@ STYLES = {'sph_soil': ('in.bench_sph_soil', []),
           'sph_taitwater': ('in.bench_taitwater', []), 'smd_ulsph': ('in.bench_ulsph', [])}
 
 
+def lammps_env():
+    """MPI as root, and the package's material files for inputs run from a scratch directory."""
+    return dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1',
+                LAMMPS_POTENTIALS=os.path.join(ROOT, 'potentials'))
+
+
 def run(lmp, infile, workdir, np=1, extra=()):
     log = os.path.join(workdir, 'log.bench')
     cmd = ['mpirun', '-np', str(np), lmp, '-in', infile, '-log', log, '-screen', 'none'] + list(extra)
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
-    subprocess.run(cmd, cwd=workdir, env=env, check=True)
+    subprocess.run(cmd, cwd=workdir, env=lammps_env(), check=True)
     text = open(log).read()
     loop = re.findall(r'Loop time of (\S+) on (\d+) procs for (\d+) steps with (\d+) atoms', text)[-1]
     seconds, procs, steps, atoms = float(loop[0]), int(loop[1]), int(loop[2]), int(loop[3])
@@ -63,8 +68,8 @@ def instructions(lmp, infile, workdir, steps, extra=()):
     out = os.path.join(workdir, f'callgrind.{steps}')
     cmd = ['valgrind', '--tool=callgrind', f'--callgrind-out-file={out}', lmp, '-in', infile,
            '-log', 'none', '-screen', 'none', '-var', 'steps', str(steps)] + list(extra)
-    env = dict(os.environ, LAMMPS_POTENTIALS=os.path.join(ROOT, 'potentials'))
-    subprocess.run(cmd, cwd=workdir, env=env, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    subprocess.run(cmd, cwd=workdir, env=lammps_env(), check=True, stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL)
     for line in open(out):
         if line.startswith('summary:') or line.startswith('totals:'):
             return int(line.split()[1])
@@ -98,13 +103,17 @@ def refinement_costs(lmp, work):
     """Instructions per particle-step of the bars, coarse and fine (examples/refinement/in.refinement -var steps N),
     and the latest comparison's wall times per particle-step relative to the coarse run's."""
     infile = os.path.join(ROOT, 'examples', 'refinement', 'in.refinement')
-    out = {'note': 'aluminium bars, d = 2 mm; walls (1449 particles, never split) in both runs; the soil is '
-                   '5000 particles coarse and 20000 fine'}
-    walls = 1449
-    for mode, soil in (('coarse', 5000), ('fine', 20000)):
+    out = {'note': 'aluminium bars, d = 2 mm, the first 40 steps; the walls (never split) are the same in both runs'}
+    for mode in ('coarse', 'fine'):
         extra = ['-var', 'problem', 'bars', '-var', 'mode', mode]
+        # the particle counts from the set-up's own log: all atoms, and the wall groups
+        setup = run(lmp, infile, work, extra=extra + ['-var', 'steps', '0'])
+        text = open(os.path.join(work, 'log.bench')).read()
+        walls = sum(int(n) for n in re.findall(r'^(\d+) atoms in group (?:floor|left)$', text, re.M))
+        soil = setup['atoms'] - walls
         per_step = (instructions(lmp, infile, work, 40, extra) - instructions(lmp, infile, work, 0, extra)) / 40
-        out[mode] = {'instructions_per_particle_step': per_step / (soil + walls),
+        out[mode] = {'particles': setup['atoms'], 'walls': walls,
+                     'instructions_per_particle_step': per_step / (soil + walls),
                      'instructions_per_soil_particle_step': per_step / soil}
         print(f'benchmark: bars {mode}: {per_step / (soil + walls):.0f} instructions/particle-step, '
               f'{per_step / soil:.0f} per soil particle-step', file=sys.stderr)

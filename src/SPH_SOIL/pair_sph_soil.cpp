@@ -379,7 +379,7 @@ void PairSPHSoil::build_neighbours()
 
 bool PairSPHSoil::neighbours_outdated() const
 {
-  return skin_check_needed() && neighbours.moved_beyond_skin(atom->x, atom->nlocal);
+  return neighbours.moved_beyond_skin(atom->x, atom->nlocal);
 }
 
 /* ----------------------------------------------------------------------

@@ -58,7 +58,8 @@ class PairSPHSoil : public Pair {
   // with fix sph/soil, each particle's skin follows its h (neighbor's skin is that of the
   // largest h): the fix asks LAMMPS to reneighbour when neighbours_outdated() on some rank.
   // Needed only while some particle has a smaller h than the largest (LAMMPS's own check
-  // watches the largest particles' skin): skin_check_needed(), the same on every rank
+  // watches the largest particles' skin): skin_check_needed(), the same on every rank, which
+  // the caller of neighbours_outdated() checks first
   bool skin_follows_h() const { return integrator != nullptr; }
   bool skin_check_needed() const { return skin_follows_h() && smaller_h_anywhere; }
   bool neighbours_outdated() const;
