@@ -14,6 +14,10 @@ for each run, reports
     x in [0, the fine run's runout], the surface being the 0.5 level of the SPH volume fraction
     (tools/sph_analysis.py: the surface of the continuum the particles stand for; a particle of
     level l has the volume (d 2^-l)^2 and h = 1.2 d alpha_r^l);
+    A run of two levels (name ending _L2) is measured against the fine run of two levels
+    (fine_L2), and the coarse, fine and paper's dynamic runs also against that one
+    (surface_rms_vs_fine_L2_m: what the second level changes);
+  - wall_time_vs_fine: wall_seconds over the fine run's (of as many levels);
   - surface_rms_vs_experiment_m (aluminium bars only): the same against the measured surface;
   - runout_m: the furthest x where that surface stands higher than one coarse spacing (2 mm for
     the bars, as in tools/validate_aluminium_bars.py);
@@ -55,7 +59,19 @@ PAIRS = [('0.5', '0.5'), ('0.55', '0.5'), ('0.55', '0.6'), ('0.55', '0.7')]
 RUNS = ([('coarse', 'coarse'), ('fine', 'fine (static 0.5, 0.5)')] +
         [(f'dynamic_{e}_{a}', f'dynamic ({e}, {a})') for e, a in PAIRS] +
         [(f'dynamic_{e}_{a}_h0', f'dynamic ({e}, {a}), viscosity_h0') for e, a in PAIRS] +
-        [(f'dynamic_0.5_0.5_t{t}', f'dynamic (0.5, 0.5), threshold {t}') for t in ('0.1', '0.2')])
+        [(f'dynamic_0.5_0.5_t{t}', f'dynamic (0.5, 0.5), threshold {t}') for t in ('0.1', '0.2')] +
+        # criteria beyond the paper's (bars only): the shear strain rate and the shear strain
+        [(f'dynamic_0.5_0.5_t{t}_shear_strain_rate', f'dynamic (0.5, 0.5), shear rate > {t}/s')
+         for t in ('10', '20')] +
+        [('dynamic_0.5_0.5_t1.0_shear_strain', 'dynamic (0.5, 0.5), shear strain > 1')] +
+        # two levels (maxlevel 2), against the lattice refined twice: their RMS and cost are
+        # measured against that fine run (reference())
+        [('fine_L2', 'fine, 2 levels (static)'), ('dynamic_0.5_0.5_L2', 'dynamic (0.5, 0.5), 2 levels')])
+
+
+def reference(key):
+    """The fine run a run is measured against: the one with as many levels."""
+    return 'fine_L2' if key.endswith('_L2') else 'fine'
 
 
 def read_log(path):
@@ -136,7 +152,13 @@ def analyse(directory, problem, root):
                      wall_us_per_particle_step=1e6 * loop / particle_steps if particle_steps else None,
                      error=error)
         if error or not os.path.exists(dump):
+            # a run that stopped: its loop time misses the segment it stopped in, so no cost
             entry['completed'] = False
+            at = re.search(r'at step (\d+)', error or '')
+            if at:
+                entry['run'] = f'{label} (stopped at step {at.group(1)})'
+            for field in ('wall_seconds', 'wall_us_per_particle_step'):
+                entry[field] = None
             results[key] = entry
             continue
         entry['completed'] = True
@@ -162,15 +184,28 @@ def analyse(directory, problem, root):
         walls = coarse['final_particles'] - coarse['soil_particles']
         for e in results.values():
             soil_steps = e['particle_steps'] - walls * e['steps']
-            e['wall_us_per_soil_particle_step'] = 1e6 * e['wall_seconds'] / soil_steps if soil_steps > 0 else None
-    if 'fine' in profiles:
-        grid_f, top_f, *_ = profiles['fine']
-        reach = results['fine']['runout_m']
+            e['wall_us_per_soil_particle_step'] = (1e6 * e['wall_seconds'] / soil_steps
+                                                   if soil_steps > 0 and e['wall_seconds'] else None)
+    def rms_from(fine, run):
+        grid_f, top_f, *_ = profiles[fine]
+        reach = results[fine]['runout_m']
         at = grid_f[grid_f <= reach]
-        ref = top_f[grid_f <= reach]
-        for key, (grid, top, x, y, volume, h) in profiles.items():
-            sim = sph_analysis.surface_height(x, y, volume, h, at)
-            results[key]['surface_rms_vs_fine_m'] = float(np.sqrt(np.mean((sim - ref) ** 2)))
+        _, _, x, y, volume, h = profiles[run]
+        sim = sph_analysis.surface_height(x, y, volume, h, at)
+        return float(np.sqrt(np.mean((sim - top_f[grid_f <= reach]) ** 2)))
+
+    for key in profiles:
+        fine = reference(key)
+        if fine in profiles:
+            results[key]['surface_rms_vs_fine_m'] = rms_from(fine, key)
+            results[key]['reference'] = fine
+            results[key]['wall_time_vs_fine'] = results[key]['wall_seconds'] / results[fine]['wall_seconds']
+    # the one-level runs against the two-level fine run too (what a second level buys)
+    if 'fine_L2' in profiles:
+        for key in ('coarse', 'fine', 'dynamic_0.5_0.5'):
+            if key in profiles:
+                results[key]['surface_rms_vs_fine_L2_m'] = rms_from('fine_L2', key)
+                results[key]['wall_time_vs_fine_L2'] = results[key]['wall_seconds'] / results['fine_L2']['wall_seconds']
     return results, profiles
 
 
@@ -233,19 +268,20 @@ def cost_figure(problem, results, out):
     """Accuracy against cost: each run's surface RMS from the fine run's against its wall time
     as a fraction of the fine run's, the paper's configuration (dynamic (0.5, 0.5), threshold
     0.05) marked."""
-    fine = results.get('fine', {}).get('wall_seconds')
     points = [(key, label, r) for key, label in RUNS for r in [results.get(key)]
-              if r and r.get('completed') and r.get('surface_rms_vs_fine_m') is not None and key != 'fine']
-    if not fine or not points:
+              if r and r.get('completed') and r.get('surface_rms_vs_fine_m') is not None
+              and key != reference(key)]
+    if not points:
         return
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(8, 4.6))
     for key, label, r in points:
-        x, y = r['wall_seconds'] / fine, 1000 * r['surface_rms_vs_fine_m']
+        x, y = r['wall_time_vs_fine'], 1000 * r['surface_rms_vs_fine_m']
         paper = key == 'dynamic_0.5_0.5'
-        marker = 's' if key == 'coarse' else ('*' if paper else ('^' if key.endswith('_h0') else 'o'))
+        marker = 's' if key == 'coarse' else ('*' if paper else ('^' if key.endswith('_h0') else
+                                                                ('D' if key.endswith('_L2') else 'o')))
         ax.plot(x, y, marker, ms=14 if paper else 8, color='C3' if paper else ('k' if key == 'coarse' else 'C0'))
         ax.annotate(label + (' (the paper\'s)' if paper else ''), (x, y), xytext=(6, 3),
                     textcoords='offset points', fontsize=7)
@@ -256,7 +292,7 @@ def cost_figure(problem, results, out):
     ax.axvline(0.35, color='grey', lw=0.8, ls=':')
     ax.text(0.35, ax.get_ylim()[1], ' 0.35 of the fine run\'s time', fontsize=7, va='top')
     ax.set_xlim(0.0, 1.05)
-    ax.set_xlabel('wall time / fine run\'s wall time')
+    ax.set_xlabel('wall time / fine run\'s wall time (2 levels: the fine run of 2 levels)')
     ax.set_ylabel('final surface RMS from the fine run\'s (mm)')
     ax.set_title(PROBLEMS[problem]['title'] + ': accuracy against cost')
     fig.tight_layout()
@@ -267,7 +303,8 @@ def cost_figure(problem, results, out):
 def table(problem, results):
     cols = [('run', 'run', '{}'), ('wall_seconds', 'wall (s)', '{:.0f}'),
             ('wall_us_per_particle_step', 'us/particle-step', '{:.3f}'),
-            ('wall_us_per_soil_particle_step', 'us/soil p.-step', '{:.3f}'), ('peak_particles', 'peak N', '{}'),
+            ('wall_us_per_soil_particle_step', 'us/soil p.-step', '{:.3f}'),
+            ('wall_time_vs_fine', 'wall / fine', '{:.2f}'), ('peak_particles', 'peak N', '{}'),
             ('final_particles', 'final N', '{}'), ('surface_rms_vs_fine_m', 'RMS vs fine (mm)', '{:.2f}'),
             ('surface_rms_vs_experiment_m', 'RMS vs exp. (mm)', '{:.2f}'),
             ('runout_m', 'runout (m)', '{:.3f}'), ('failure_angle_deg', 'failure angle', '{:.1f}'),

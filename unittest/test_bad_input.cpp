@@ -400,7 +400,7 @@ std::vector<BadInput> cases()
         "compute c all sph/soil/atom", "Compute sph/soil/atom requires atom_style sph/soil");
   error("ComputeUnknownValue", "patch", {}, "compute c all sph/soil/atom stress",
         "Illegal compute sph/soil/atom value stress (allowed: sxx syy szz sxy sxz syz pressure sqrtJ2 "
-        "strain yielded density h level neighbours)");
+        "strain yielded density h level neighbours shear_strain shear_strain_rate)");
 
   // ---- data files (the rank that reads the atom raises the error)
   data("DataMassNegative", "1 1 -1.0 0.1 1000 0 0.5 0.5 0", "",

@@ -144,6 +144,17 @@ TEST(SoilInvariants, PressureSqrtJ2AndStrainMeasure)
   }
   const double strain[6] = {1.0, 2.0, 3.0, 4.0, 5.0, 6.0};
   EXPECT_DOUBLE_EQ(strain_measure(strain), 14.0);
+  // equivalent shear strain: gamma in simple shear (eps_xy = gamma / 2) in every plane, 2 e in
+  // pure shear (principal strains e, -e: simple shear seen at 45 degrees), none in compaction
+  for (int k = 3; k < 6; k++) {
+    double simple[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    simple[k] = 0.15;
+    EXPECT_DOUBLE_EQ(shear_strain(simple), 0.3) << "component " << k;
+  }
+  const double pure[6] = {0.2, -0.2, 0.0, 0.0, 0.0, 0.0};
+  EXPECT_DOUBLE_EQ(shear_strain(pure), 0.4);
+  const double compaction[6] = {-0.1, -0.1, -0.1, 0.0, 0.0, 0.0};
+  EXPECT_NEAR(shear_strain(compaction), 0.0, 1e-15);
 }
 
 TEST(DruckerPrager, ConstantsModuliAndWaveSpeed)

@@ -235,6 +235,41 @@ TEST_F(Refinement, SkinsThatFollowHMissNoPairWithinTheSupport)
   EXPECT_LT(builds, 20);
 }
 
+// Without fix sph/soil nothing asks LAMMPS to reneighbour for a daughter's smaller skin, so
+// the pair style gives every pair the whole neighbor skin: the list holds exactly the pairs
+// within h_i + h_j + skin (the cubic spline's support 2 h_ij plus the skin), daughters too.
+TEST_F(Refinement, WithoutTheIntegratorEveryPairGetsTheWholeSkin)
+{
+  patch(2, 12, true);
+  HIDE_OUTPUT([&] {
+    command("region half block INF 0.06 INF INF INF INF units box");
+    command("group half region half");
+    command("sph_soil/refine half separation 0.5 smoothing 0.5");
+    command("run 0 post no");
+  });
+  auto pair = dynamic_cast<PairSPHSoil *>(lmp->force->pair);
+  auto avec = dynamic_cast<AtomVecSPHSoil *>(lmp->atom->avec);
+  double **x = lmp->atom->x;
+  const double *h = avec->smoothing_length;
+  const double skin = lmp->neighbor->skin;
+  const int nlocal = lmp->atom->nlocal, nall = nlocal + lmp->atom->nghost;
+  auto within_reach = [&](int i, int j) {
+    const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], cut = (h[i] + skin) + h[j];
+    return dx * dx + dy * dy < cut * cut;
+  };
+  // as in the test above: twice the listed pairs against the owned-owned and owned-ghost views
+  bigint counts[2] = {0, 0}, all[2];
+  const auto &list = pair->neighbour_list();
+  for (int i = 0; i < nlocal; i++) {
+    counts[0] += 2 * (list.end(i) - list.first(i));
+    for (int j = 0; j < nall; j++)
+      if (j != i && within_reach(i, j)) counts[1]++;
+  }
+  MPI_Allreduce(counts, all, 2, MPI_LMP_BIGINT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(all[0], all[1]);
+  EXPECT_GT(all[0], 0);
+}
+
 TEST_F(Refinement, SplitsConserveMassMomentumEnergyAndAngularMomentum)
 {
   for (int dimension : {2, 3}) {

@@ -14,6 +14,7 @@
 #include "update.h"
 
 #include <cstring>
+#include <string>
 
 using namespace LAMMPS_NS;
 
@@ -26,7 +27,21 @@ struct Name {
 const Name names[] = {{"sxx", 0},     {"syy", 1},      {"szz", 2},      {"sxy", 3},     {"sxz", 4},
                       {"syz", 5},     {"pressure", 6}, {"sqrtJ2", 7},   {"strain", 8},  {"yielded", 9},
                       {"density", 10}, {"rho", 10},    {"h", 11},       {"level", 12},
-                      {"neighbours", 13}, {"neighbors", 13}};
+                      {"neighbours", 13}, {"neighbors", 13}, {"shear_strain", 14},
+                      {"shear_strain_rate", 15}};
+
+// the names for an error message, without the aliases (each quantity's first name)
+std::string allowed_names()
+{
+  std::string list;
+  int last = -1;
+  for (const auto &n : names)
+    if (n.quantity > last) {
+      list += (list.empty() ? "" : " ") + std::string(n.name);
+      last = n.quantity;
+    }
+  return list;
+}
 }    // namespace
 
 /* ---------------------------------------------------------------------- */
@@ -41,8 +56,8 @@ ComputeSPHSoilAtom::ComputeSPHSoilAtom(LAMMPS *lmp, int narg, char **arg) :
     for (const auto &n : names)
       if (strcmp(arg[iarg], n.name) == 0) found = n.quantity;
     if (found < 0)
-      error->all(FLERR, "Illegal compute sph/soil/atom value {} (allowed: sxx syy szz sxy sxz syz "
-                        "pressure sqrtJ2 strain yielded density h level neighbours)", arg[iarg]);
+      error->all(FLERR, "Illegal compute sph/soil/atom value {} (allowed: {})", arg[iarg],
+                 allowed_names());
     quantities.push_back((Quantity) found);
   }
   if (quantities.empty())
@@ -91,6 +106,8 @@ double ComputeSPHSoilAtom::evaluate(Quantity q, int i) const
     case H: return avec->smoothing_length[i];
     case LEVEL: return avec->level[i];
     case NEIGHBOURS: return pair->listed_partners(i);
+    case SHEAR_STRAIN: return SPHSoil::shear_strain(avec->total_strain[i]);
+    case SHEAR_STRAIN_RATE: return SPHSoil::shear_strain(avec->strain_rate[i]);
   }
   return 0.0;
 }

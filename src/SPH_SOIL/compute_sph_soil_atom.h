@@ -32,7 +32,7 @@ class ComputeSPHSoilAtom : public Compute {
 
  private:
   enum Quantity { SXX, SYY, SZZ, SXY, SXZ, SYZ, PRESSURE, SQRTJ2, STRAIN, YIELDED, DENSITY, H, LEVEL,
-                  NEIGHBOURS };
+                  NEIGHBOURS, SHEAR_STRAIN, SHEAR_STRAIN_RATE };
   std::vector<Quantity> quantities;
   int nmax;
   double *values;      // one quantity

@@ -69,6 +69,14 @@ inline double strain_measure(const double strain[6])
   return strain[0] * strain[0] + strain[1] * strain[1] + strain[2] * strain[2];
 }
 
+// equivalent shear strain sqrt(2 e^ab e^ab) of a strain (or strain-rate) tensor, e its
+// deviatoric part: gamma in simple shear (eps_xy = gamma / 2), blind to volume change; the
+// shear components count twice in the contraction, so it is 2 sqrt(J2) of the tensor
+inline double shear_strain(const double strain[6])
+{
+  return 2.0 * std::sqrt(second_invariant(strain));
+}
+
 /* ----------------------------------------------------------------------
    Jaumann terms of the stress rate, sigma^ag omega^bg + sigma^gb omega^ag, i.e. the
    matrix W sigma - sigma W with W^ab = omega^ab. Since W is antisymmetric and sigma
