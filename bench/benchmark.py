@@ -99,6 +99,40 @@ def machine():
     return {'cores': os.cpu_count(), 'cpu': model}
 
 
+def comparison_costs():
+    """The latest refinement comparison's cost and accuracy figures (doc/refinement_comparison.json, written by
+    tools/compare_refinement.py): each run's wall time per (soil) particle-step against the coarse run's, its wall
+    time against its fine run's (of as many levels), and its surface RMS from that fine run against the coarse
+    run's."""
+    comparison = os.path.join(ROOT, 'doc', 'refinement_comparison.json')
+    if not os.path.exists(comparison):
+        return {}
+    with open(comparison) as f:
+        runs = json.load(f)
+    out = {'comparison': {}}
+    for problem, entries in runs.items():
+        coarse = entries.get('coarse', {})
+        rows = {}
+        for key, e in entries.items():
+            row = {k: e.get(k) for k in ('run', 'wall_seconds', 'wall_us_per_particle_step',
+                                         'wall_us_per_soil_particle_step', 'surface_rms_vs_fine_m', 'reference')}
+            for k in ('wall_us_per_particle_step', 'wall_us_per_soil_particle_step'):
+                if e.get(k) and coarse.get(k):
+                    row[k + '_to_coarse'] = e[k] / coarse[k]
+            if e.get('wall_time_vs_fine') is not None:
+                row['wall_seconds_to_fine'] = e['wall_time_vs_fine']
+            # the coarse run's distance from the same fine run
+            coarse_rms = coarse.get('surface_rms_vs_fine_L2_m' if e.get('reference') == 'fine_L2'
+                                    else 'surface_rms_vs_fine_m')
+            if e.get('surface_rms_vs_fine_m') is not None and coarse_rms:
+                row['rms_vs_fine_to_coarse'] = e['surface_rms_vs_fine_m'] / coarse_rms
+            rows[key] = row
+        out['comparison'][problem] = rows
+    out['comparison_note'] = ('from doc/refinement_comparison.json (tools/run_refinement.sh, 2 ranks), not rerun '
+                              'by this script')
+    return out
+
+
 def refinement_costs(lmp, work):
     """Instructions per particle-step of the bars, coarse and fine (examples/refinement/in.refinement -var steps N),
     and the latest comparison's wall times per particle-step relative to the coarse run's."""
@@ -119,29 +153,7 @@ def refinement_costs(lmp, work):
               f'{per_step / soil:.0f} per soil particle-step', file=sys.stderr)
     for key in ('instructions_per_particle_step', 'instructions_per_soil_particle_step'):
         out['fine_to_coarse_' + key] = out['fine'][key] / out['coarse'][key]
-    comparison = os.path.join(ROOT, 'doc', 'refinement_comparison.json')
-    if os.path.exists(comparison):
-        with open(comparison) as f:
-            runs = json.load(f)
-        out['comparison'] = {}
-        for problem, entries in runs.items():
-            coarse = entries.get('coarse', {})
-            fine = entries.get('fine', {})
-            rows = {}
-            for key, e in entries.items():
-                row = {k: e.get(k) for k in ('run', 'wall_seconds', 'wall_us_per_particle_step',
-                                             'wall_us_per_soil_particle_step', 'surface_rms_vs_fine_m')}
-                for k in ('wall_us_per_particle_step', 'wall_us_per_soil_particle_step'):
-                    if e.get(k) and coarse.get(k):
-                        row[k + '_to_coarse'] = e[k] / coarse[k]
-                if e.get('wall_seconds') and fine.get('wall_seconds'):
-                    row['wall_seconds_to_fine'] = e['wall_seconds'] / fine['wall_seconds']
-                if e.get('surface_rms_vs_fine_m') is not None and coarse.get('surface_rms_vs_fine_m'):
-                    row['rms_vs_fine_to_coarse'] = e['surface_rms_vs_fine_m'] / coarse['surface_rms_vs_fine_m']
-                rows[key] = row
-            out['comparison'][problem] = rows
-        out['comparison_note'] = ('from doc/refinement_comparison.json (tools/run_refinement.sh, 2 ranks), not rerun '
-                                  'by this script')
+    out.update(comparison_costs())
     return out
 
 

@@ -66,7 +66,9 @@ RUNS = ([('coarse', 'coarse'), ('fine', 'fine (static 0.5, 0.5)')] +
         [('dynamic_0.5_0.5_t1.0_shear_strain', 'dynamic (0.5, 0.5), shear strain > 1')] +
         # two levels (maxlevel 2), against the lattice refined twice: their RMS and cost are
         # measured against that fine run (reference())
-        [('fine_L2', 'fine, 2 levels (static)'), ('dynamic_0.5_0.5_L2', 'dynamic (0.5, 0.5), 2 levels')])
+        [('fine_L2', 'fine, 2 levels (static)'),
+         ('dynamic_0.5_0.5_t10_shear_strain_rate_L2', 'dynamic (0.5, 0.5), shear rate > 10/s, 2 levels'),
+         ('dynamic_0.5_0.5_L2', 'dynamic (0.5, 0.5), 2 levels')])
 
 
 def reference(key):

@@ -27,10 +27,11 @@ for problem in "${problems[@]}"; do
   if [ "$problem" = bars ]; then
     for threshold in 10 20; do runs+=("dynamic 0.5 0.5 0 $threshold shear_strain_rate"); done
     runs+=("dynamic 0.5 0.5 0 1.0 shear_strain")
-    # two levels (maxlevel 2) against the lattice refined twice: about 1.5 h on 2 cores, so
-    # only with TWO_LEVELS=1
+    # two levels (maxlevel 2) against the lattice refined twice: the fine run alone takes about
+    # 1.5 h on 2 cores, so only with TWO_LEVELS=1
     if [ "${TWO_LEVELS:-0}" = 1 ]; then
-      runs+=("fine 0.5 0.5 0 0.05 strain 2" "dynamic 0.5 0.5 0 0.05 strain 2")
+      runs+=("fine 0.5 0.5 0 0.05 strain 2" "dynamic 0.5 0.5 0 10 shear_strain_rate 2"
+             "dynamic 0.5 0.5 0 0.05 strain 2")
     fi
   fi
   for run in "${runs[@]}"; do

@@ -62,6 +62,9 @@ def kernel_2d(r, h):
     return w * 10.0 / (7.0 * math.pi * h * h)
 
 
+SURFACE_BLOCK = 64    # points of a column evaluated at a time (surface_height)
+
+
 def surface_height(x, y, volume, h, at, resolution=None):
     """Height of the phi = 0.5 level above each position of `at` (0 where phi < 0.5 everywhere).
 
@@ -79,12 +82,24 @@ def surface_height(x, y, volume, h, at, resolution=None):
             continue
         xn, yn, vn, hn = x[near], y[near], volume[near], h[near]
         ys = np.arange(max(0.0, yn.min() - reach), yn.max() + reach + step, step)
-        r = np.hypot(xa - xn[None, :], ys[:, None] - yn[None, :])
-        phi = (vn[None, :] * kernel_2d(r, hn[None, :])).sum(axis=1)
-        inside = np.nonzero(phi >= LEVEL)[0]
-        if len(inside) == 0:
+        # phi on the column from the top down, a block of points at a time with the particles
+        # within reach of the block, until a block holds the topmost point inside (the level
+        # lies near the top: most columns need one or two blocks, not the whole height)
+        phi = np.zeros(len(ys))
+        top = -1
+        end = len(ys)
+        while end > 0 and top < 0:
+            begin = max(0, end - SURFACE_BLOCK)
+            block = ys[begin:end]
+            close = (yn > block[0] - reach) & (yn < block[-1] + reach)
+            r = np.hypot(xa - xn[close][None, :], block[:, None] - yn[close][None, :])
+            phi[begin:end] = (vn[close][None, :] * kernel_2d(r, hn[close][None, :])).sum(axis=1)
+            inside = np.nonzero(phi[begin:end] >= LEVEL)[0]
+            if len(inside):
+                top = begin + inside[-1]
+            end = begin
+        if top < 0:
             continue
-        top = inside[-1]
         if top + 1 < len(ys):
             # linear interpolation of the crossing between ys[top] and ys[top + 1]
             f0, f1 = phi[top], phi[top + 1]

@@ -33,6 +33,13 @@ class SurfaceTest(unittest.TestCase):
         top = sph_analysis.surface_height(x, y, D * D, H, np.array([0.05, 0.1, 0.15]))
         np.testing.assert_allclose(top, 0.1, atol=0.02 * D)
 
+    def test_particle_far_above_does_not_hide_the_surface(self):
+        # the column is evaluated from the top down in blocks: a lone particle 0.2 m above the
+        # block (many blocks of points above its surface) is not material, the block's top is
+        x, y = lattice(100, 50)
+        top = sph_analysis.surface_height(np.r_[x, 0.1], np.r_[y, 0.3], D * D, H, np.array([0.05, 0.1, 0.15]))
+        np.testing.assert_allclose(top, 0.1, atol=0.02 * D)
+
     def test_single_particle_is_not_material(self):
         top = sph_analysis.surface_height(np.array([0.0]), np.array([0.5 * D]), D * D, H, np.array([0.0]))
         self.assertEqual(top[0], 0.0)
