@@ -13,8 +13,9 @@ ranks: the parallel efficiency after splits, with LAMMPS's breakdown of where th
 the aluminium bars at the comparison's spacing, the instructions per particle-step and per soil particle-step of the
 coarse and the statically refined (fine) lattice (callgrind, 40 steps minus 0: what refinement costs per particle,
 free of the load of the machine), and the cost figures of the latest refinement comparison (doc/
-refinement_comparison.json, written by tools/run_refinement.sh, an hour on 2 cores: not rerun here), each run's wall
-time per particle-step against the coarse run's. Prints JSON.
+refinement_comparison.json, written by tools/run_refinement.sh, an hour on 2 cores: not rerun here): each run's wall
+time per particle-step against the coarse run's, its wall time against its fine run's and its surface RMS from that
+run against the coarse run's. Prints JSON.
 """
 import argparse
 import json
@@ -135,7 +136,7 @@ def comparison_costs():
 
 def refinement_costs(lmp, work):
     """Instructions per particle-step of the bars, coarse and fine (examples/refinement/in.refinement -var steps N),
-    and the latest comparison's wall times per particle-step relative to the coarse run's."""
+    and the latest comparison's figures (comparison_costs())."""
     infile = os.path.join(ROOT, 'examples', 'refinement', 'in.refinement')
     out = {'note': 'aluminium bars, d = 2 mm, the first 40 steps; the walls (never split) are the same in both runs'}
     for mode in ('coarse', 'fine'):

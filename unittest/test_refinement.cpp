@@ -82,6 +82,44 @@ class Refinement : public LAMMPSTest {
     return global;
   }
 
+  // split the particles left of x = `edge` once with (0.5, 0.5): a refined half
+  void refine_left_of(double edge)
+  {
+    HIDE_OUTPUT([&] {
+      command(fmt::format("region half block INF {} INF INF INF INF units box", edge));
+      command("group half region half");
+      command("sph_soil/refine half separation 0.5 smoothing 0.5");
+    });
+  }
+
+  // Pairs closer than cutoff(i, j) over all ranks, twice: {in the pair style's list, by brute
+  // force over owned and ghost atoms}. Each pair between owned atoms counts twice in both; a
+  // pair with a ghost is listed on one of its ranks and seen from both, once each. With
+  // `listed_beyond`, also the listed pairs at or beyond the cutoff (twice).
+  template <class Cutoff>
+  std::vector<bigint> pairs_within(Cutoff cutoff, bigint *listed_beyond = nullptr)
+  {
+    auto pair = dynamic_cast<PairSPHSoil *>(lmp->force->pair);
+    double **x = lmp->atom->x;
+    const int nlocal = lmp->atom->nlocal, nall = nlocal + lmp->atom->nghost;
+    auto within = [&](int i, int j) {
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double cut = cutoff(i, j);
+      return dx * dx + dy * dy + dz * dz < cut * cut;
+    };
+    bigint local[3] = {0, 0, 0}, all[3];
+    const auto &list = pair->neighbour_list();
+    for (int i = 0; i < nlocal; i++) {
+      for (int jj = list.first(i); jj < list.end(i); jj++)
+        local[within(i, list.partner_data()[jj]) ? 0 : 2] += 2;
+      for (int j = 0; j < nall; j++)
+        if (j != i && within(i, j)) local[1]++;
+    }
+    MPI_Allreduce(local, all, 3, MPI_LMP_BIGINT, MPI_SUM, MPI_COMM_WORLD);
+    if (listed_beyond) *listed_beyond = all[2];
+    return {all[0], all[1]};
+  }
+
   double fix_vector(const char *id, int n)
   {
     return lmp->modify->fix[lmp->modify->find_fix(id)]->compute_vector(n);
@@ -188,8 +226,7 @@ TEST_F(Refinement, RefinedParticlesListThePartnersOfTheirOwnSmoothingLength)
 // a particle has moved half its own skin: at every step of a shearing flow of the daughters
 // (the coarse half at rest, so that LAMMPS's own check, which knows the coarse skin only, would
 // reneighbour too late: without the daughters' request this test fails at step 25), every pair
-// within its support is in the list. Counted over all ranks: each pair between owned atoms
-// once, each pair with a ghost once for the two owned-ghost views it has (on one rank or two).
+// within its support is in the list (counted over all ranks: pairs_within()).
 TEST_F(Refinement, SkinsThatFollowHMissNoPairWithinTheSupport)
 {
   patch(2, 12, true);
@@ -198,35 +235,19 @@ TEST_F(Refinement, SkinsThatFollowHMissNoPairWithinTheSupport)
     command("variable fast_y atom (x<0.06)*0.15*sin(2*PI*x/0.03)");
     command("velocity all set v_fast_x v_fast_y NULL units box");
     command("neighbor 0.0001 bin");
-    command("region half block INF 0.06 INF INF INF INF units box");
-    command("group half region half");
-    command("sph_soil/refine half separation 0.5 smoothing 0.5");
+  });
+  refine_left_of(0.06);
+  HIDE_OUTPUT([&] {
     command("fix integrate all sph/soil cfl 0.1");
     command("run 0 post no");
   });
-  auto pair = dynamic_cast<PairSPHSoil *>(lmp->force->pair);
   auto avec = dynamic_cast<AtomVecSPHSoil *>(lmp->atom->avec);
   const bigint builds_at_start = lmp->neighbor->ncalls;
   for (int step = 1; step <= 40; step++) {
     HIDE_OUTPUT([&] { command("run 1 pre no post no"); });
-    double **x = lmp->atom->x;
     const double *h = avec->smoothing_length;
-    const int nlocal = lmp->atom->nlocal, nall = nlocal + lmp->atom->nghost;
-    auto within_support = [&](int i, int j) {
-      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], reach = h[i] + h[j];
-      return dx * dx + dy * dy < reach * reach;
-    };
-    // twice the pairs, so that owned-ghost views count one half each
-    bigint twice[2] = {0, 0}, all[2];
-    const auto &list = pair->neighbour_list();
-    for (int i = 0; i < nlocal; i++) {
-      for (int jj = list.first(i); jj < list.end(i); jj++)
-        if (within_support(i, list.partner_data()[jj])) twice[0] += 2;
-      for (int j = 0; j < nall; j++)
-        if (j != i && within_support(i, j)) twice[1]++;
-    }
-    MPI_Allreduce(twice, all, 2, MPI_LMP_BIGINT, MPI_SUM, MPI_COMM_WORLD);
-    ASSERT_EQ(all[0], all[1]) << "pairs within the support missing from the list at step " << step;
+    const auto counts = pairs_within([&](int i, int j) { return h[i] + h[j]; });
+    ASSERT_EQ(counts[0], counts[1]) << "pairs within the support missing from the list at step " << step;
   }
   // the daughters reneighbour after moving a quarter of the coarse skin (8 times here in 40
   // steps), far less than at every step
@@ -241,33 +262,16 @@ TEST_F(Refinement, SkinsThatFollowHMissNoPairWithinTheSupport)
 TEST_F(Refinement, WithoutTheIntegratorEveryPairGetsTheWholeSkin)
 {
   patch(2, 12, true);
-  HIDE_OUTPUT([&] {
-    command("region half block INF 0.06 INF INF INF INF units box");
-    command("group half region half");
-    command("sph_soil/refine half separation 0.5 smoothing 0.5");
-    command("run 0 post no");
-  });
-  auto pair = dynamic_cast<PairSPHSoil *>(lmp->force->pair);
+  refine_left_of(0.06);
+  HIDE_OUTPUT([&] { command("run 0 post no"); });
   auto avec = dynamic_cast<AtomVecSPHSoil *>(lmp->atom->avec);
-  double **x = lmp->atom->x;
   const double *h = avec->smoothing_length;
   const double skin = lmp->neighbor->skin;
-  const int nlocal = lmp->atom->nlocal, nall = nlocal + lmp->atom->nghost;
-  auto within_reach = [&](int i, int j) {
-    const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], cut = (h[i] + skin) + h[j];
-    return dx * dx + dy * dy < cut * cut;
-  };
-  // as in the test above: twice the listed pairs against the owned-owned and owned-ghost views
-  bigint counts[2] = {0, 0}, all[2];
-  const auto &list = pair->neighbour_list();
-  for (int i = 0; i < nlocal; i++) {
-    counts[0] += 2 * (list.end(i) - list.first(i));
-    for (int j = 0; j < nall; j++)
-      if (j != i && within_reach(i, j)) counts[1]++;
-  }
-  MPI_Allreduce(counts, all, 2, MPI_LMP_BIGINT, MPI_SUM, MPI_COMM_WORLD);
-  EXPECT_EQ(all[0], all[1]);
-  EXPECT_GT(all[0], 0);
+  bigint listed_beyond = -1;
+  const auto counts = pairs_within([&](int i, int j) { return (h[i] + skin) + h[j]; }, &listed_beyond);
+  EXPECT_EQ(counts[0], counts[1]);
+  EXPECT_EQ(listed_beyond, 0);
+  EXPECT_GT(counts[0], 0);
 }
 
 TEST_F(Refinement, SplitsConserveMassMomentumEnergyAndAngularMomentum)
