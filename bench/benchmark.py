@@ -13,9 +13,10 @@ ranks: the parallel efficiency after splits, with LAMMPS's breakdown of where th
 the aluminium bars at the comparison's spacing, the instructions per particle-step and per soil particle-step of the
 coarse and the statically refined (fine) lattice (callgrind, 40 steps minus 0: what refinement costs per particle,
 free of the load of the machine), and the cost figures of the latest refinement comparison (doc/
-refinement_comparison.json, written by tools/run_refinement.sh, an hour on 2 cores: not rerun here): each run's wall
+refinement_comparison.json, written by python3 -m sph_soil refinement, an hour on 2 cores: not rerun here): each run's wall
 time per particle-step against the coarse run's, its wall time against its fine run's and its surface RMS from that
-run against the coarse run's. Prints JSON.
+run against the coarse run's. Prints JSON. lmp runs through the tools' runner (tools/sph_soil/runner.py):
+--lmp, else $SPH_SOIL_LMP, else lmp of the build directory of SPH_SOIL_LAMMPS.
 """
 import argparse
 import json
@@ -27,6 +28,12 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
+# The one place outside the tools' package that puts tools/ on Python's path (the command line
+# gets it from PYTHONPATH=tools): this script keeps its own command, bench/benchmark.py.
+sys.path.insert(0, os.path.join(ROOT, 'tools'))
+from sph_soil.logs import Log  # noqa: E402
+from sph_soil.runner import Lammps, add_lmp_argument  # noqa: E402
+
 # name: input and its variables; sph_soil_cohesive is the same layout with a cohesive soil in
 # tension (the loop with the artificial stress)
 STYLES = {'sph_soil': ('in.bench_sph_soil', []),
@@ -34,43 +41,28 @@ STYLES = {'sph_soil': ('in.bench_sph_soil', []),
           'sph_taitwater': ('in.bench_taitwater', []), 'smd_ulsph': ('in.bench_ulsph', [])}
 
 
-def lammps_env():
-    """MPI as root, and the package's material files for inputs run from a scratch directory."""
-    return dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1',
-                LAMMPS_POTENTIALS=os.path.join(ROOT, 'potentials'))
-
-
 def run(lmp, infile, workdir, np=1, extra=()):
-    log = os.path.join(workdir, 'log.bench')
-    cmd = ['mpirun', '-np', str(np), lmp, '-in', infile, '-log', log, '-screen', 'none'] + list(extra)
-    subprocess.run(cmd, cwd=workdir, env=lammps_env(), check=True)
-    text = open(log).read()
-    loop = re.findall(r'Loop time of (\S+) on (\d+) procs for (\d+) steps with (\d+) atoms', text)[-1]
-    seconds, procs, steps, atoms = float(loop[0]), int(loop[1]), int(loop[2]), int(loop[3])
+    log = Log(lmp.run(infile, workdir, np=np, log='log.bench', extra=extra, check=True).log)
+    loop = log.loops()[-1]
+    seconds, procs, steps, atoms = loop.seconds, loop.procs, loop.steps, loop.atoms
     # sph/soil builds its own list and prints its mean (LAMMPS's count is 0 for it)
-    neighs = (re.findall(r'^SPH_SOIL neighbours per atom: (\S+)', text, re.M) or
-              re.findall(r'Ave neighs/atom = (\S+)', text))
-    pair = re.findall(r'^Pair\s+\|\s+\S+\s+\|\s+(\S+)', text, re.M)
+    neighs = (log.findall(r'^SPH_SOIL neighbours per atom: (\S+)', re.M) or
+              log.findall(r'Ave neighs/atom = (\S+)'))
     # LAMMPS's breakdown of the loop time: each section's average over ranks, as a fraction
-    sections = {}
-    for name in ('Pair', 'Neigh', 'Comm', 'Output', 'Modify', 'Other'):
-        found = re.findall(rf'^{name}\s+\|\s+\S+\s+\|\s+(\S+)', text, re.M)
-        if found:
-            sections[name.lower()] = float(found[-1]) / seconds
+    sections = {name: value / seconds for name, value in log.timing_breakdown().items()}
     return {'seconds': seconds, 'procs': procs, 'steps': steps, 'atoms': atoms,
             'particle_steps_per_second_per_core': atoms * steps / seconds / procs,
             'neighbours_per_atom': float(neighs[-1]) if neighs else None,
-            'pair_fraction': float(pair[-1]) / seconds if pair else None,
+            'pair_fraction': sections.get('pair'),
             'time_fractions': sections}
 
 
 def instructions(lmp, infile, workdir, steps, extra=()):
     """Instructions of a whole lmp process (1 rank, no mpirun) counted by callgrind."""
     out = os.path.join(workdir, f'callgrind.{steps}')
-    cmd = ['valgrind', '--tool=callgrind', f'--callgrind-out-file={out}', lmp, '-in', infile,
-           '-log', 'none', '-screen', 'none', '-var', 'steps', str(steps)] + list(extra)
-    subprocess.run(cmd, cwd=workdir, env=lammps_env(), check=True, stdout=subprocess.DEVNULL,
-                   stderr=subprocess.DEVNULL)
+    lmp.run(infile, workdir, np=None, prefix=['valgrind', '--tool=callgrind', f'--callgrind-out-file={out}'],
+            variables=[('steps', steps)], log='none', extra=extra, check=True, stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL)
     for line in open(out):
         if line.startswith('summary:') or line.startswith('totals:'):
             return int(line.split()[1])
@@ -83,7 +75,7 @@ def instructions_per_particle_step(lmp, infile, workdir, atoms, steps=50, extra=
 
 
 def lammps_version(lmp):
-    text = subprocess.run([lmp, '-h'], capture_output=True, text=True).stdout
+    text = lmp.help_text()
     m = re.search(r'Simulator - (.*)', text)
     return m.group(1).strip() if m else 'unknown'
 
@@ -102,7 +94,7 @@ def machine():
 
 def comparison_costs():
     """The latest refinement comparison's cost and accuracy figures (doc/refinement_comparison.json, written by
-    tools/compare_refinement.py): each run's wall time per (soil) particle-step against the coarse run's, its wall
+    python3 -m sph_soil refinement): each run's wall time per (soil) particle-step against the coarse run's, its wall
     time against its fine run's (of as many levels), and its surface RMS from that fine run against the coarse
     run's."""
     comparison = os.path.join(ROOT, 'doc', 'refinement_comparison.json')
@@ -129,8 +121,8 @@ def comparison_costs():
                 row['rms_vs_fine_to_coarse'] = e['surface_rms_vs_fine_m'] / coarse_rms
             rows[key] = row
         out['comparison'][problem] = rows
-    out['comparison_note'] = ('from doc/refinement_comparison.json (tools/run_refinement.sh, 2 ranks), not rerun '
-                              'by this script')
+    out['comparison_note'] = ('from doc/refinement_comparison.json (python3 -m sph_soil refinement, 2 ranks), '
+                              'not rerun by this script')
     return out
 
 
@@ -143,8 +135,8 @@ def refinement_costs(lmp, work):
         extra = ['-var', 'problem', 'bars', '-var', 'mode', mode]
         # the particle counts from the set-up's own log: all atoms, and the wall groups
         setup = run(lmp, infile, work, extra=extra + ['-var', 'steps', '0'])
-        text = open(os.path.join(work, 'log.bench')).read()
-        walls = sum(int(n) for n in re.findall(r'^(\d+) atoms in group (?:floor|left)$', text, re.M))
+        walls = sum(int(n) for n in Log(os.path.join(work, 'log.bench')).findall(
+            r'^(\d+) atoms in group (?:floor|left)$', re.M))
         soil = setup['atoms'] - walls
         per_step = (instructions(lmp, infile, work, 40, extra) - instructions(lmp, infile, work, 0, extra)) / 40
         out[mode] = {'particles': setup['atoms'], 'walls': walls,
@@ -160,7 +152,7 @@ def refinement_costs(lmp, work):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument('--lmp', default=os.path.join(ROOT, 'build', 'lmp'))
+    add_lmp_argument(p)
     p.add_argument('--repeat', type=int, default=1)
     p.add_argument('--json', default=None)
     p.add_argument('--bars', action='store_true', help='also time the short aluminium-bar example')
@@ -172,7 +164,7 @@ def main():
                    help='also count the instructions of coarse and refined bars per (soil) particle-step and '
                         'add the latest refinement comparison\'s cost figures')
     a = p.parse_args()
-    lmp = os.path.abspath(a.lmp)
+    lmp = Lammps(a.lmp).require()
 
     results = {}
     with tempfile.TemporaryDirectory() as work:

@@ -61,9 +61,8 @@ echo "build_traditional_make: $tree/src/lmp_mpi built in $(( $(date +%s) - start
 ./lmp_mpi -h | grep -q 'sph_soil/set' || { echo "build_traditional_make: lmp_mpi lacks the SPH_SOIL styles" >&2; exit 1; }
 
 if [ "$run" -eq 1 ]; then
-  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-  # the traditional make knows nothing of the package's potentials/ directory
-  export LAMMPS_POTENTIALS=$root/potentials
-  /usr/bin/python3 "$root/tools/regression.py" --lmp "$tree/src/lmp_mpi" --example aluminium_bars \
-    --np 2 --workdir "$tree/regression_aluminium_bars_np2"
+  # the tools' runner sets LAMMPS_POTENTIALS to the package's potentials/, which the traditional
+  # make knows nothing of, and Open MPI's permission to run as root
+  PYTHONPATH=$root/tools /usr/bin/python3 -m sph_soil regression --lmp "$tree/src/lmp_mpi" \
+    --example aluminium_bars --np 2 --workdir "$tree/regression_aluminium_bars_np2"
 fi

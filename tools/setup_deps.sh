@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(cmake ninja-build g++ make pkg-config dpkg-dev ccache
           libopenmpi-dev openmpi-bin libeigen3-dev libpng-dev libjpeg-dev zlib1g-dev gzip
-          libgtest-dev libgmock-dev python3-numpy python3-matplotlib)
+          libgtest-dev libgmock-dev python3-numpy python3-matplotlib python3-pytest)
 
 missing=()
 for p in "${packages[@]}"; do

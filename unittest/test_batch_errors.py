@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 """Errors reach the screen and the log of a plain batch run of lmp, on 1 and 2 MPI ranks.
 
-    unittest/test_batch_errors.py --lmp build/lmp --mpirun mpirun [--workdir DIR]
+    PYTHONPATH=tools unittest/test_batch_errors.py --lmp build/lmp --mpirun mpirun [--workdir DIR]
 
 Each case runs lmp as a separate process, the way a user does (`lmp -in in.x > out`, or under
-mpirun), provokes an error of the package and asserts that the message is in what the process
-wrote to its standard output (the screen) and in the log file:
+mpirun; through the tools' runner, sph_soil.runner), provokes an error of the package and asserts
+that the message is in what the process wrote to its standard output (the screen) and in the log
+file:
 - a data file with a negative mass: an error of the rank that reads the atom (error->one),
   the path whose message LAMMPS 29Sep2021 lost with exceptions on;
 - a run that goes unstable: a collective error (every rank stops with the same message).
@@ -17,6 +18,8 @@ import os
 import shutil
 import subprocess
 import sys
+
+from sph_soil.runner import Lammps
 
 DATA = """bad data file
 
@@ -70,13 +73,11 @@ def run_case(args, name, np, inputs, files, message, in_log=True):
             f.write(text)
     with open(os.path.join(work, 'in.case'), 'w') as f:
         f.write(inputs)
-    cmd = [os.path.abspath(args.lmp), '-in', 'in.case']
-    if np > 1:
-        cmd = [args.mpirun, '-np', str(np)] + cmd
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
+    # one rank: lmp alone, as a user runs it; more: under mpirun. LAMMPS's own log.lammps.
     with open(os.path.join(work, 'screen'), 'w') as screen:
-        run = subprocess.run(cmd, cwd=work, env=env, stdout=screen, stderr=subprocess.STDOUT,
-                             timeout=120)
+        run = Lammps(args.lmp, args.mpirun).run('in.case', work, np=np if np > 1 else None, log=None,
+                                               screen=None, stdout=screen, stderr=subprocess.STDOUT,
+                                               timeout=120)
     screen_text = open(os.path.join(work, 'screen')).read()
     log_path = os.path.join(work, 'log.lammps')
     log_text = open(log_path).read() if os.path.exists(log_path) else ''

@@ -1,29 +1,34 @@
-#!/usr/bin/python3
-"""Draw the refinement-parameter map (the dynamic-refinement paper's Fig. 1) from the CSV of
-sph_soil_refine_map: log10 E as a grey map for case (a) h(x) = h_p and case (b)
+"""The refinement-parameter map (doc/refinement_parameters.rst): CSV, summary JSON and figure.
+
+Runs sph_soil_refine_map of the build directory (tools/refine_map/refine_map.cpp, built with the
+package, by tools/build.sh if it is missing; its options pass through, e.g. --ra 1.3 or --dimension 3) into doc/refine_map.csv and
+doc/refine_map.json, then draws the dynamic-refinement paper's Fig. 1 from the CSV into
+doc/img/refine_map.png: log10 E as a grey map for case (a) h(x) = h_p and case (b)
 h(x) = alpha_r h_p, the instability lines for d_ij/d_ref = 1.0 and 0.85, the paper's studied
 points and its recommended box [0.5, 0.58]^2.
 
-    tools/plot_refine_map.py refine_map.csv refine_map.png [--ra 1.2]
+    python3 -m sph_soil refine-map                       # 2D, r_a = 1.2, grid 0.2..0.8 step 0.02
+    python3 -m sph_soil refine-map -- --ra 1.3           # another ratio h/d
+    python3 -m sph_soil refine-map -- --dimension 3 --step 0.05
 """
-import argparse
+import os
+import subprocess
 
 import numpy as np
-import matplotlib
-matplotlib.use('Agg')
-import matplotlib.pyplot as plt
+
+from .. import paths, report, runner
+
+COMMAND = 'refine-map'
+CSV = os.path.join(paths.DOC, 'refine_map.csv')
+JSON = os.path.join(paths.DOC, 'refine_map.json')
+PNG = os.path.join(paths.DOC_IMG, 'refine_map.png')
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument('csv')
-    p.add_argument('png')
-    p.add_argument('--ra', type=float, default=1.2)
-    a = p.parse_args()
-    data = np.genfromtxt(a.csv, delimiter=',', names=True)
+def plot(csv, png, ra=1.2):
+    plt = report.pyplot()
+    data = np.genfromtxt(csv, delimiter=',', names=True)
     eps = np.unique(data['eps_r'])
     alpha = np.unique(data['alpha_r'])
-    ra = a.ra
 
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.8), sharey=True)
     for ax, column, title in ((axes[0], 'E_a', 'a) h(x) = h_p'), (axes[1], 'E_b', r'b) h(x) = $\alpha_r h_p$')):
@@ -54,8 +59,24 @@ def main():
     axes[1].legend(fontsize=6, loc='lower right')
     fig.suptitle(f'Kernel gradient error of one split and instability conditions, $r_a$ = {ra}')
     fig.tight_layout()
-    fig.savefig(a.png, dpi=130)
+    fig.savefig(png, dpi=130)
 
 
-if __name__ == '__main__':
-    main()
+def add_arguments(p):
+    p.add_argument('--tool', default=None, help='the sph_soil_refine_map binary (default: the one in the '
+                   'build directory of SPH_SOIL_LAMMPS, as --lmp of the other commands)')
+    p.add_argument('options', nargs='*', help='sph_soil_refine_map options, after --')
+
+
+def main(a):
+    tool = a.tool or os.path.join(paths.build_dir(), 'sph_soil_refine_map')
+    if not a.tool:
+        runner.build_if_missing(tool)
+    os.makedirs(paths.DOC_IMG, exist_ok=True)
+    subprocess.run([tool, '--csv', CSV, '--json', JSON] + a.options, check=True)
+    ra = 1.2
+    for k, option in enumerate(a.options[:-1]):
+        if option == '--ra':
+            ra = float(a.options[k + 1])
+    plot(CSV, PNG, ra)
+    print('refine_map: doc/refine_map.csv, doc/refine_map.json, doc/img/refine_map.png')

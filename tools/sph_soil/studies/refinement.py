@@ -1,8 +1,8 @@
-#!/usr/bin/python3
 """The refinement paper's Section IV comparison: coarse, fine and dynamic runs.
 
-Reads examples/refinement/{log,dump}.<problem>_<run>.* written by tools/run_refinement.sh and,
-for each run, reports
+Runs the comparison's matrix (RUNS, declared once below: coarse, fine and the dynamic runs of
+each problem) in examples/refinement on all cores, then reads the runs'
+examples/refinement/{log,dump}.<problem>_<run>.* and, for each run, reports
   - wall_seconds: the sum of the run segments' loop times (LAMMPS "Loop time of ...");
   - wall_us_per_particle_step: wall_seconds over the particle-steps (walls included; the atoms
     of the thermo rows times the steps between them), in microseconds on all ranks together;
@@ -12,7 +12,7 @@ for each run, reports
   - peak_particles, final_particles: from the thermo output (walls included, same in every run);
   - surface_rms_vs_fine_m: RMS difference of the final free surface from the fine run's, over
     x in [0, the fine run's runout], the surface being the 0.5 level of the SPH volume fraction
-    (tools/sph_analysis.py: the surface of the continuum the particles stand for; a particle of
+    (sph_soil.analysis: the surface of the continuum the particles stand for; a particle of
     level l has the volume (d 2^-l)^2 and h = 1.2 d alpha_r^l);
     A run of two levels (name ending _L2) is measured against the fine run of two levels
     (fine_L2), and the coarse, fine and paper's dynamic runs also against that one
@@ -20,9 +20,9 @@ for each run, reports
   - wall_time_vs_fine: wall_seconds over the fine run's (of as many levels);
   - surface_rms_vs_experiment_m (aluminium bars only): the same against the measured surface;
   - runout_m: the furthest x where that surface stands higher than one coarse spacing (2 mm for
-    the bars, as in tools/validate_aluminium_bars.py);
+    the bars, as in the aluminium-bars study);
   - failure_angle_deg: the angle of the boundary of the soil that moved less than 0.75 coarse
-    spacings (1.5 mm for the bars, as in tools/validate_aluminium_bars.py), by initial position;
+    spacings (1.5 mm for the bars, as in the aluminium-bars study), by initial position;
     daughters carry their parent's initial position (fix store/state is inherited);
   - instability_index: the fraction of soil particles whose nearest neighbour is closer than a
     third of their own spacing. In a lattice the nearest neighbour sits at one spacing, and
@@ -32,20 +32,31 @@ Writes doc/refinement_comparison.json, doc/refinement_comparison.rst (tables) an
 doc/img/refinement_<problem>_frames.png (one row per run), _surface.png and _cost.png (accuracy
 against cost: RMS vs fine against the wall time as a fraction of the fine run's).
 
-  tools/compare_refinement.py --dir examples/refinement [bars] [collapse]
+  python3 -m sph_soil refinement [bars] [collapse]        # run what is missing, then compare
+  python3 -m sph_soil refinement --only 'dynamic_0.5' bars  # only the runs whose name matches
+  python3 -m sph_soil refinement --two-levels bars          # also maxlevel 2 (the fine run: 1.5 h)
+  python3 -m sph_soil refinement --compare-only             # the table and pictures of the runs there
+
+A run is skipped when its final dump is newer than the input and the binary (delete
+dump.*.final to force it); a run that stops with an error is reported as stopped. Without --lmp,
+a missing lmp is built first (tools/build.sh).
 """
-import argparse
 import glob
 import json
 import math
 import os
 import re
-import sys
+from dataclasses import dataclass
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import sph_analysis  # noqa: E402
+from .. import analysis, paths, report, runner
+from ..dumps import read_dump
+from ..logs import Log
+
+COMMAND = 'refinement'
+DIRECTORY = paths.example_dir('refinement')
+INPUT = os.path.join(DIRECTORY, 'in.refinement')
 
 PROBLEMS = {
     'bars': dict(d=0.002, height=0.1, times=(0.06, 0.11, 0.6), title='Aluminium bars (Bui et al. 2008)',
@@ -53,22 +64,64 @@ PROBLEMS = {
     'collapse': dict(d=0.04, height=2.0, times=(0.25, 0.45, 1.8), title='Soil collapse (doc/theory.rst 6.2)',
                      experiment=None),
 }
+
+
+@dataclass(frozen=True)
+class Run:
+    """One run of the comparison: in.refinement's variables (as strings, the way they enter the
+    run's name) and the label of the tables and figures."""
+    label: str
+    mode: str
+    eps: str = '0.5'
+    alpha: str = '0.5'
+    h0: str = '0'
+    threshold: str = '0.05'
+    criterion: str = 'strain'
+    maxlevel: str = '1'
+    bars_only: bool = False     # criteria whose thresholds are the bars' rates and strains
+    two_levels: bool = False    # run only with --two-levels
+
+    @property
+    def key(self):
+        """The run's name without its problem, as in.refinement builds it (log.<problem>_<key>)."""
+        key = f'dynamic_{self.eps}_{self.alpha}' if self.mode == 'dynamic' else self.mode
+        if self.h0 == '1':
+            key += '_h0'
+        if self.threshold != '0.05':
+            key += f'_t{self.threshold}'
+        if self.criterion != 'strain':
+            key += f'_{self.criterion}'
+        if self.maxlevel != '1':
+            key += f'_L{self.maxlevel}'
+        return key
+
+    def variables(self, problem):
+        return [('problem', problem), ('mode', self.mode), ('eps', self.eps), ('alpha', self.alpha),
+                ('h0', self.h0), ('threshold', self.threshold), ('criterion', self.criterion),
+                ('maxlevel', self.maxlevel)]
+
+
 # the paper's four (separation, smoothing) pairs, each also with the artificial viscosity that
 # follows the level (pair_style sph/soil viscosity_h0: every level dissipates as the coarse one)
 PAIRS = [('0.5', '0.5'), ('0.55', '0.5'), ('0.55', '0.6'), ('0.55', '0.7')]
-RUNS = ([('coarse', 'coarse'), ('fine', 'fine (static 0.5, 0.5)')] +
-        [(f'dynamic_{e}_{a}', f'dynamic ({e}, {a})') for e, a in PAIRS] +
-        [(f'dynamic_{e}_{a}_h0', f'dynamic ({e}, {a}), viscosity_h0') for e, a in PAIRS] +
-        [(f'dynamic_0.5_0.5_t{t}', f'dynamic (0.5, 0.5), threshold {t}') for t in ('0.1', '0.2')] +
+RUNS = ([Run('coarse', 'coarse'), Run('fine (static 0.5, 0.5)', 'fine')] +
+        [Run(f'dynamic ({e}, {a})', 'dynamic', e, a) for e, a in PAIRS] +
+        [Run(f'dynamic ({e}, {a}), viscosity_h0', 'dynamic', e, a, h0='1') for e, a in PAIRS] +
+        # (0.5, 0.5) at thresholds above the paper's 0.05
+        [Run(f'dynamic (0.5, 0.5), threshold {t}', 'dynamic', threshold=t) for t in ('0.1', '0.2')] +
         # criteria beyond the paper's (bars only): the shear strain rate and the shear strain
-        [(f'dynamic_0.5_0.5_t{t}_shear_strain_rate', f'dynamic (0.5, 0.5), shear rate > {t}/s')
-         for t in ('10', '20')] +
-        [('dynamic_0.5_0.5_t1.0_shear_strain', 'dynamic (0.5, 0.5), shear strain > 1')] +
+        [Run(f'dynamic (0.5, 0.5), shear rate > {t}/s', 'dynamic', threshold=t, criterion='shear_strain_rate',
+             bars_only=True) for t in ('10', '20')] +
+        [Run('dynamic (0.5, 0.5), shear strain > 1', 'dynamic', threshold='1.0', criterion='shear_strain',
+             bars_only=True)] +
         # two levels (maxlevel 2), against the lattice refined twice: their RMS and cost are
-        # measured against that fine run (reference())
-        [('fine_L2', 'fine, 2 levels (static)'),
-         ('dynamic_0.5_0.5_t10_shear_strain_rate_L2', 'dynamic (0.5, 0.5), shear rate > 10/s, 2 levels'),
-         ('dynamic_0.5_0.5_L2', 'dynamic (0.5, 0.5), 2 levels')])
+        # measured against that fine run (reference()); the fine run alone takes about 1.5 h on
+        # 2 cores, so only with --two-levels
+        [Run('fine, 2 levels (static)', 'fine', maxlevel='2', bars_only=True, two_levels=True),
+         Run('dynamic (0.5, 0.5), shear rate > 10/s, 2 levels', 'dynamic', threshold='10',
+             criterion='shear_strain_rate', maxlevel='2', bars_only=True, two_levels=True),
+         Run('dynamic (0.5, 0.5), 2 levels', 'dynamic', maxlevel='2', bars_only=True, two_levels=True)])
+LABELS = {run.key: run.label for run in RUNS}
 
 
 def reference(key):
@@ -80,34 +133,24 @@ def read_log(path):
     """Sum of loop times, the Atoms column of every thermo table, the particle-steps (atoms
     integrated over the steps between thermo rows, each interval at its end's count), the
     steps, and whether it ended cleanly."""
-    text = open(path).read()
-    loop = sum(float(t) for t in re.findall(r'Loop time of ([0-9.eE+-]+) on', text))
+    log = Log(path)
+    loop = sum(l.seconds for l in log.loops())
     atoms = []
     particle_steps = 0.0
     steps = 0
     last_step = None
-    header = None
-    for line in text.splitlines():
-        words = line.split()
-        if words[:1] == ['Step']:
-            header = words
+    for header, rows in log.thermo_tables():
+        if 'Atoms' not in header:
             continue
-        if header and len(words) == len(header):
-            try:
-                n = int(float(words[header.index('Atoms')]))
-                step = int(float(words[header.index('Step')]))
-            except ValueError:
-                header = None
-                continue
+        a, s = header.index('Atoms'), header.index('Step')
+        for row in rows:
+            n, step = int(row[a]), int(row[s])
             atoms.append(n)
             if last_step is not None and step > last_step:
                 particle_steps += n * (step - last_step)
                 steps += step - last_step
             last_step = step
-        else:
-            header = None
-    error = re.search(r'^ERROR.*$', text, re.M)
-    return loop, atoms, particle_steps, steps, error.group(0) if error else None
+    return loop, atoms, particle_steps, steps, log.error()
 
 
 def smoothing_ratio(key):
@@ -136,51 +179,63 @@ def instability_index(x, y, spacing, cell):
     return float(close.mean())
 
 
-def analyse(directory, problem, root):
+def measure_run(log, dump, problem, key, label):
+    """One run's entry of the comparison (costs from its log; surface, runout, failure angle and
+    instability from its final dump) and its profile (grid, surface, x, y, volume, h), or None
+    for a run that stopped."""
     spec = PROBLEMS[problem]
     d = spec['d']
+    loop, atoms, particle_steps, steps, error = read_log(log)
+    entry = dict(run=label, wall_seconds=round(loop, 1), peak_particles=max(atoms) if atoms else None,
+                 final_particles=atoms[-1] if atoms else None, particle_steps=particle_steps,
+                 steps=steps,
+                 wall_us_per_particle_step=1e6 * loop / particle_steps if particle_steps else None,
+                 error=error)
+    if error or not os.path.exists(dump):
+        # a run that stopped: its loop time misses the segment it stopped in, so no cost
+        entry['completed'] = False
+        at = re.search(r'at step (\d+)', error or '')
+        if at:
+            entry['run'] = f'{label} (stopped at step {at.group(1)})'
+        for field in ('wall_seconds', 'wall_us_per_particle_step'):
+            entry[field] = None
+        return entry, None
+    entry['completed'] = True
+    s = read_dump(dump)
+    level = s['c_soil[2]']
+    spacing = d * 0.5 ** level
+    h = 1.2 * d * smoothing_ratio(key) ** level
+    x, y = s['x'], s['y']
+    entry['runout_m'], grid, top = analysis.runout(x, y, spacing ** 2, h, d, d)
+    moved = np.hypot(x - s['f_origin[1]'], y - s['f_origin[2]']) > 0.75 * d
+    entry['failure_angle_deg'] = round(analysis.failure_line(s['f_origin[1]'], s['f_origin[2]'], moved, d,
+                                                             spec['height'])[2], 2)
+    entry['instability_index'] = round(instability_index(x, y, spacing, d), 5)
+    entry['soil_particles'] = int(len(x))
+    if spec['experiment']:
+        exp = experiment(problem)
+        sim = analysis.surface_height(x, y, spacing ** 2, h, exp[:, 0])
+        entry['surface_rms_vs_experiment_m'] = float(np.sqrt(np.mean((sim - exp[:, 1]) ** 2)))
+    return entry, (grid, top, x, y, spacing ** 2, h)
+
+
+def experiment(problem):
+    """The measured surface of a problem (x, y), or None."""
+    path = PROBLEMS[problem]['experiment']
+    return np.loadtxt(os.path.join(paths.ROOT, path), delimiter=',', skiprows=1) if path else None
+
+
+def analyse(directory, problem):
     results = {}
     profiles = {}
-    for key, label in RUNS:
+    for key, label in LABELS.items():
         name = f'{problem}_{key}'
         log = os.path.join(directory, f'log.{name}')
-        dump = os.path.join(directory, f'dump.{name}.final')
         if not os.path.exists(log):
             continue
-        loop, atoms, particle_steps, steps, error = read_log(log)
-        entry = dict(run=label, wall_seconds=round(loop, 1), peak_particles=max(atoms) if atoms else None,
-                     final_particles=atoms[-1] if atoms else None, particle_steps=particle_steps,
-                     steps=steps,
-                     wall_us_per_particle_step=1e6 * loop / particle_steps if particle_steps else None,
-                     error=error)
-        if error or not os.path.exists(dump):
-            # a run that stopped: its loop time misses the segment it stopped in, so no cost
-            entry['completed'] = False
-            at = re.search(r'at step (\d+)', error or '')
-            if at:
-                entry['run'] = f'{label} (stopped at step {at.group(1)})'
-            for field in ('wall_seconds', 'wall_us_per_particle_step'):
-                entry[field] = None
-            results[key] = entry
-            continue
-        entry['completed'] = True
-        s = sph_analysis.read_dump(dump)
-        level = s['c_soil[2]']
-        spacing = d * 0.5 ** level
-        h = 1.2 * d * smoothing_ratio(key) ** level
-        x, y = s['x'], s['y']
-        entry['runout_m'], grid, top = sph_analysis.runout(x, y, spacing ** 2, h, d, d)
-        moved = np.hypot(x - s['f_origin[1]'], y - s['f_origin[2]']) > 0.75 * d
-        entry['failure_angle_deg'] = round(sph_analysis.failure_line(s['f_origin[1]'], s['f_origin[2]'], moved, d,
-                                                                      spec['height'])[2], 2)
-        entry['instability_index'] = round(instability_index(x, y, spacing, d), 5)
-        entry['soil_particles'] = int(len(x))
-        profiles[key] = (grid, top, x, y, spacing ** 2, h)
-        if spec['experiment']:
-            exp = np.loadtxt(os.path.join(root, spec['experiment']), delimiter=',', skiprows=1)
-            sim = sph_analysis.surface_height(x, y, spacing ** 2, h, exp[:, 0])
-            entry['surface_rms_vs_experiment_m'] = float(np.sqrt(np.mean((sim - exp[:, 1]) ** 2)))
-        results[key] = entry
+        results[key], profile = measure_run(log, os.path.join(directory, f'dump.{name}.final'), problem, key, label)
+        if profile:
+            profiles[key] = profile
     coarse = results.get('coarse', {})
     if coarse.get('completed'):
         walls = coarse['final_particles'] - coarse['soil_particles']
@@ -193,7 +248,7 @@ def analyse(directory, problem, root):
         reach = results[fine]['runout_m']
         at = grid_f[grid_f <= reach]
         _, _, x, y, volume, h = profiles[run]
-        sim = sph_analysis.surface_height(x, y, volume, h, at)
+        sim = analysis.surface_height(x, y, volume, h, at)
         return float(np.sqrt(np.mean((sim - top_f[grid_f <= reach]) ** 2)))
 
     for key in profiles:
@@ -212,12 +267,10 @@ def analyse(directory, problem, root):
 
 
 def frames_figure(directory, problem, out):
-    import matplotlib
-    matplotlib.use('Agg')
-    import matplotlib.pyplot as plt
+    plt = report.pyplot()
     import matplotlib.image as mpimg
     rows = []
-    for key, label in RUNS:
+    for key, label in LABELS.items():
         files = []
         for k in (1, 2, 3):
             found = sorted(glob.glob(os.path.join(directory, f'frame_{problem}_{key}_{k}.*.png')),
@@ -244,18 +297,16 @@ def frames_figure(directory, problem, out):
     plt.close(fig)
 
 
-def surface_figure(problem, profiles, root, out):
-    import matplotlib
-    matplotlib.use('Agg')
-    import matplotlib.pyplot as plt
+def surface_figure(problem, profiles, out):
+    plt = report.pyplot()
     fig, ax = plt.subplots(figsize=(9, 3.4))
-    for key, label in RUNS:
+    for key, label in LABELS.items():
         if key in profiles:
             grid, top, *_ = profiles[key]
             ax.plot(grid, top, label=label, lw=1.2 if key.startswith('dynamic') else 2.0)
     spec = PROBLEMS[problem]
     if spec['experiment']:
-        exp = np.loadtxt(os.path.join(root, spec['experiment']), delimiter=',', skiprows=1)
+        exp = experiment(problem)
         ax.plot(exp[:, 0], exp[:, 1], 'ko', ms=3, label='experiment')
     ax.set_xlabel('x (m)')
     ax.set_ylabel('surface height (m)')
@@ -270,14 +321,12 @@ def cost_figure(problem, results, out):
     """Accuracy against cost: each run's surface RMS from the fine run's against its wall time
     as a fraction of the fine run's, the paper's configuration (dynamic (0.5, 0.5), threshold
     0.05) marked."""
-    points = [(key, label, r) for key, label in RUNS for r in [results.get(key)]
+    points = [(key, label, r) for key, label in LABELS.items() for r in [results.get(key)]
               if r and r.get('completed') and r.get('surface_rms_vs_fine_m') is not None
               and key != reference(key)]
     if not points:
         return
-    import matplotlib
-    matplotlib.use('Agg')
-    import matplotlib.pyplot as plt
+    plt = report.pyplot()
     fig, ax = plt.subplots(figsize=(8, 4.6))
     for key, label, r in points:
         x, y = r['wall_time_vs_fine'], 1000 * r['surface_rms_vs_fine_m']
@@ -315,7 +364,7 @@ def table(problem, results):
         cols = [c for c in cols if c[0] != 'surface_rms_vs_experiment_m']
     lines = []
     rows = []
-    for key, _ in RUNS:
+    for key in LABELS:
         if key not in results:
             continue
         e = results[key]
@@ -341,31 +390,49 @@ def table(problem, results):
     return '\n'.join(lines)
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument('--dir', default='examples/refinement')
-    p.add_argument('problems', nargs='*', default=['bars', 'collapse'])
-    a = p.parse_args()
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    jpath = os.path.join(root, 'doc', 'refinement_comparison.json')
+def run_matrix(lmp, problems, np, only=None, two_levels=False, directory=DIRECTORY):
+    """Run the comparison's runs of `problems` in `directory` (those whose name matches the
+    regular expression `only`), skipping those whose final dump is newer than the input and
+    the binary; a run that stops with an error is reported and the next one runs."""
+    for problem in problems:
+        for run in RUNS:
+            if (run.bars_only and problem != 'bars') or (run.two_levels and not two_levels):
+                continue
+            name = f'{problem}_{run.key}'
+            if only and not re.search(only, name):
+                continue
+            dump = os.path.join(directory, f'dump.{name}.final')
+            if (os.path.exists(dump) and os.path.getmtime(dump) > os.path.getmtime(INPUT)
+                    and os.path.getmtime(dump) > os.path.getmtime(lmp.binary)):
+                print(f'== {name}: up to date', flush=True)
+                continue
+            print(f'== {name}', flush=True)
+            for old in glob.glob(os.path.join(directory, f'frame_{name}_*.png')):
+                os.remove(old)
+            if not lmp.run(INPUT, directory, np=np, variables=run.variables(problem), log=f'log.{name}').ok:
+                print(f'== {name} stopped with an error (see log.{name})', flush=True)
+
+
+def compare(directory, problems):
+    """The comparison's JSON (doc/refinement_comparison.json, the problems not compared kept),
+    its generated page doc/refinement_comparison.rst and the pictures in doc/img/."""
+    jpath = os.path.join(paths.DOC, 'refinement_comparison.json')
     summary = json.load(open(jpath)) if os.path.exists(jpath) else {}
-    os.makedirs(os.path.join(root, 'doc', 'img'), exist_ok=True)
-    for problem in a.problems:
-        results, profiles = analyse(a.dir, problem, root)
+    os.makedirs(paths.DOC_IMG, exist_ok=True)
+    for problem in problems:
+        results, profiles = analyse(directory, problem)
         if not results:
-            print(f'compare_refinement: no runs of {problem} in {a.dir}')
+            print(f'refinement: no runs of {problem} in {directory}')
             continue
         summary[problem] = results
-        frames_figure(a.dir, problem, os.path.join(root, 'doc', 'img', f'refinement_{problem}_frames.png'))
-        surface_figure(problem, profiles, root, os.path.join(root, 'doc', 'img', f'refinement_{problem}_surface.png'))
-        cost_figure(problem, results, os.path.join(root, 'doc', 'img', f'refinement_{problem}_cost.png'))
-    with open(jpath, 'w') as f:
-        json.dump(summary, f, indent=1)
-    print(json.dumps(summary, indent=1))
+        frames_figure(directory, problem, os.path.join(paths.DOC_IMG, f'refinement_{problem}_frames.png'))
+        surface_figure(problem, profiles, os.path.join(paths.DOC_IMG, f'refinement_{problem}_surface.png'))
+        cost_figure(problem, results, os.path.join(paths.DOC_IMG, f'refinement_{problem}_cost.png'))
+    report.write_json(summary, jpath, indent=1, end='')
 
     page = ['Refinement comparison (generated)', '=' * 33, '',
-            'Written by ``tools/compare_refinement.py`` from the runs of ``tools/run_refinement.sh``',
-            '(examples/refinement, 2 MPI ranks). Columns: see the script\'s docstring.', '']
+            'Written by ``python3 -m sph_soil refinement`` (tools/sph_soil/studies/refinement.py)',
+            '(examples/refinement, 2 MPI ranks). Columns: see the study\'s docstring.', '']
     for problem in ('bars', 'collapse'):
         if problem not in summary:
             continue
@@ -375,11 +442,54 @@ def main():
                  f'.. image:: img/refinement_{problem}_surface.png', '   :width: 80%', '',
                  f'.. image:: img/refinement_{problem}_cost.png', '   :width: 70%', '']
     # the discussion of the numbers is written by hand beside the generated page
-    if os.path.exists(os.path.join(root, 'doc', 'refinement_comparison_notes.rst')):
+    if os.path.exists(os.path.join(paths.DOC, 'refinement_comparison_notes.rst')):
         page += ['.. include:: refinement_comparison_notes.rst', '']
-    with open(os.path.join(root, 'doc', 'refinement_comparison.rst'), 'w') as f:
+    with open(os.path.join(paths.DOC, 'refinement_comparison.rst'), 'w') as f:
         f.write('\n'.join(page))
 
 
-if __name__ == '__main__':
-    main()
+def report_example(directory, log, variables, seconds):
+    """run_example's numbers and plot of the one run in.refinement makes (by default the bars,
+    dynamic (0.5, 0.5)): refinement.json, its entry of the comparison (without a fine run to
+    measure it against), and refinement.png, its final surface (with the measured one for the
+    bars); a run without a final state (the short mode) shows its particle count instead."""
+    problem = variables['problem']
+    run = Run('', **{name: variables[name] for name in ('mode', 'eps', 'alpha', 'h0', 'threshold', 'criterion',
+                                                        'maxlevel')})
+    entry, profile = measure_run(log, os.path.join(directory, f'dump.{problem}_{run.key}.final'), problem, run.key,
+                                 LABELS.get(run.key, run.key))
+    report.write_json({problem: {run.key: entry}}, os.path.join(directory, 'refinement.json'))
+    out = os.path.join(directory, 'refinement.png')
+    if profile:
+        surface_figure(problem, {run.key: profile}, out)
+        return
+    plt = report.pyplot()
+    fig, ax = plt.subplots(figsize=(7, 3.5))
+    for header, rows in Log(log).thermo_tables():
+        if 'Atoms' in header:
+            ax.plot([r[header.index('Step')] for r in rows], [r[header.index('Atoms')] for r in rows], 'k.-')
+    ax.set_xlabel('step')
+    ax.set_ylabel('particles (walls included)')
+    ax.set_title(f'{PROBLEMS[problem]["title"]}, {entry["run"]}: no final state (short run)', fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
+def add_arguments(p):
+    runner.add_arguments(p, np=os.cpu_count() or 1)
+    p.add_argument('problems', nargs='*', default=list(PROBLEMS), help='bars, collapse (default: both)')
+    p.add_argument('--only', default=None, help='only the runs whose name (e.g. bars_dynamic_0.5_0.5) '
+                   'matches this regular expression')
+    p.add_argument('--two-levels', action='store_true',
+                   help='also maxlevel 2 against the lattice refined twice (bars; the fine run takes 1.5 h)')
+    p.add_argument('--compare-only', action='store_true', help='run nothing: compare the runs there')
+    p.add_argument('--dir', default=DIRECTORY, help='where the runs are (default: examples/refinement)')
+
+
+def main(a):
+    unknown = set(a.problems) - set(PROBLEMS)
+    if unknown:
+        raise SystemExit(f'refinement: unknown problem(s) {sorted(unknown)}: bars or collapse')
+    if not a.compare_only:
+        run_matrix(runner.from_arguments(a, build=True), a.problems, a.np, a.only, a.two_levels, a.dir)
+    compare(a.dir, a.problems)

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The bearing capacity of a smooth strip footing on weightless soil against Prandtl's c N_c
 (examples/bearing_capacity).
 
@@ -31,29 +30,28 @@ coloured by its accumulated maximum shear strain at the end of the push, phi = 0
 by side); --doc copies plot and picture to doc/img/bearing_capacity.png and
 doc/img/bearing_capacity_mechanism.png.
 
-  tools/bearing_capacity.py [--lmp build/lmp] [--np 2] [--resolutions 10 20] [--phis 0 20]
-                            [--speed 0.1] [--tension 0] [--slip freeslip] [--check-speed]
-                            [--width 12] [--depth 5]
-                            [--workdir /tmp/sph_soil_bearing_capacity] [--doc]
-                            [--json examples/bearing_capacity/bearing_capacity.json]
-                            [--plot examples/bearing_capacity/bearing_capacity.png]
-                            [--mechanism examples/bearing_capacity/bearing_capacity_mechanism.png]
+  python3 -m sph_soil bearing-capacity [--lmp build/lmp] [--np 2] [--resolutions 10 20] [--phis 0 20]
+                                      [--speed 0.1] [--tension 0] [--slip freeslip] [--check-speed]
+                                      [--width 12] [--depth 5]
+                                      [--workdir /tmp/sph_soil_bearing_capacity] [--doc]
+                                      [--json examples/bearing_capacity/bearing_capacity.json]
+                                      [--plot examples/bearing_capacity/bearing_capacity.png]
+                                      [--mechanism examples/bearing_capacity/bearing_capacity_mechanism.png]
 """
-import argparse
 import glob
-import json
 import math
 import os
-import re
 import shutil
-import subprocess
-import time
 
 import numpy as np
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-EXDIR = os.path.join(ROOT, 'examples', 'bearing_capacity')
-EXAMPLE = os.path.join(EXDIR, 'in.bearing_capacity')
+from .. import paths, report, runner
+from ..dumps import read_ave_time
+from ..logs import Log
+
+COMMAND = 'bearing-capacity'
+EXDIR = paths.example_dir('bearing_capacity')
+EXAMPLE = paths.example_input('bearing_capacity')
 B = 1.0
 
 
@@ -65,7 +63,40 @@ def prandtl_nc(phi):
     return (nq - 1.0) / t
 
 
-def run(args, phi, resolution, speed):
+def measure(directory, phi, resolution, speed, c, slip, tension, returncode, seconds, log='log.lammps'):
+    """A finished push (bearing.dat, the log, frame.*.png in directory): the limit pressure
+    from the log's last line, q at settlements 0.05 B and 0.10 B, the largest q, the curve."""
+    log = Log(os.path.join(directory, log))
+    m = log.search(r'limit pressure q = (\S+) Pa = \S+ c, q / \(c N_c\) = (\S+) .*soil inside the '
+                   r'footing: (\d+)')
+    data = read_ave_time(os.path.join(directory, 'bearing.dat'))
+    settle, q = data[:, 2], data[:, 3]
+    nc = prandtl_nc(phi)
+    result = {'phi_deg': phi, 'B_over_d': resolution, 'd_m': B / resolution, 'speed_m_per_s': speed,
+              'slip': slip, 'tension_cutoff': tension, 'N_c': round(nc, 4),
+              'finished': returncode == 0 and m is not None,
+              'wall_seconds': None if seconds is None else round(seconds, 1),
+              'directory': directory}
+    if m:
+        result.update({'q_limit_Pa': float(m.group(1)), 'q_limit_over_cNc': float(m.group(2)),
+                       'soil_inside_footing': int(m.group(3))})
+    else:
+        err = log.findall(r'ERROR.*')
+        result['error'] = err[-1] if err else f'exit code {returncode}'
+        result['stopped_at_settlement_over_B'] = round(float(settle[-1]), 4) if len(settle) else 0.0
+    for s in (0.05, 0.10):
+        if len(settle) and settle[-1] >= s:
+            result[f'q_at_{s:.2f}B_over_cNc'] = round(float(np.interp(s, settle, q)) / (c * nc), 4)
+    if len(q):
+        result['q_max_over_cNc'] = round(float(q.max()) / (c * nc), 4)
+    result['settlement'] = settle.tolist()
+    result['q_over_c'] = (q / c).tolist()
+    frames = sorted(glob.glob(os.path.join(directory, 'frame.*.png')))
+    result['frame'] = frames[-1] if frames else None
+    return result
+
+
+def run(lmp, args, phi, resolution, speed):
     d = B / resolution
     tag = f'phi{phi:g}_Bd{resolution:g}_v{speed:g}_{args.slip}_T{args.tension}_box{args.width:g}x{args.depth:g}'
     directory = os.path.join(args.workdir, tag)
@@ -74,48 +105,66 @@ def run(args, phi, resolution, speed):
         os.remove(old)
     # LAMMPS reads its input as it goes: run a copy, which an edit of the example cannot change
     shutil.copy(EXAMPLE, os.path.join(directory, 'in.bearing_capacity'))
-    cmd = ['mpirun', '-np', str(args.np), args.lmp, '-in', 'in.bearing_capacity', '-var', 'phi', f'{phi:g}',
-           '-var', 'd', f'{d:.10g}', '-var', 'speed', f'{speed:g}', '-var', 'c', f'{args.c:g}',
-           '-var', 'slip', args.slip, '-var', 'tension', '-1' if args.tension == 'none' else args.tension,
-           '-var', 'width', f'{args.width:g}', '-var', 'depth', f'{args.depth:g}',
-           '-log', 'log.lammps', '-screen', 'none']
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
-    start = time.time()
-    done = subprocess.run(cmd, cwd=directory, env=env)
-    seconds = time.time() - start
-    text = open(os.path.join(directory, 'log.lammps')).read()
-    m = re.search(r'limit pressure q = (\S+) Pa = \S+ c, q / \(c N_c\) = (\S+) .*soil inside the '
-                  r'footing: (\d+)', text)
-    data = np.loadtxt(os.path.join(directory, 'bearing.dat'), comments='#', ndmin=2)
-    settle, q = data[:, 2], data[:, 3]
-    nc = prandtl_nc(phi)
-    result = {'phi_deg': phi, 'B_over_d': resolution, 'd_m': d, 'speed_m_per_s': speed,
-              'slip': args.slip, 'tension_cutoff': args.tension, 'N_c': round(nc, 4),
-              'finished': done.returncode == 0 and m is not None, 'wall_seconds': round(seconds, 1),
-              'directory': directory}
-    if m:
-        result.update({'q_limit_Pa': float(m.group(1)), 'q_limit_over_cNc': float(m.group(2)),
-                       'soil_inside_footing': int(m.group(3))})
-    else:
-        err = re.findall(r'ERROR.*', text)
-        result['error'] = err[-1] if err else f'exit code {done.returncode}'
-        result['stopped_at_settlement_over_B'] = round(float(settle[-1]), 4) if len(settle) else 0.0
-    for s in (0.05, 0.10):
-        if len(settle) and settle[-1] >= s:
-            result[f'q_at_{s:.2f}B_over_cNc'] = round(float(np.interp(s, settle, q)) / (args.c * nc), 4)
-    if len(q):
-        result['q_max_over_cNc'] = round(float(q.max()) / (args.c * nc), 4)
-    result['settlement'] = settle.tolist()
-    result['q_over_c'] = (q / args.c).tolist()
-    frames = sorted(glob.glob(os.path.join(directory, 'frame.*.png')))
-    result['frame'] = frames[-1] if frames else None
-    return result
+    done = lmp.run('in.bearing_capacity', directory, np=args.np, variables=[
+        ('phi', f'{phi:g}'), ('d', f'{d:.10g}'), ('speed', f'{speed:g}'), ('c', f'{args.c:g}'),
+        ('slip', args.slip), ('tension', '-1' if args.tension == 'none' else args.tension),
+        ('width', f'{args.width:g}'), ('depth', f'{args.depth:g}')])
+    return measure(directory, phi, resolution, speed, args.c, args.slip, args.tension, done.returncode,
+                   done.seconds)
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument('--lmp', default=os.path.join(ROOT, 'build', 'lmp'))
-    p.add_argument('--np', type=int, default=2)
+def curves_plot(runs, speed, phis, resolutions, footing, out):
+    """q / c against settlement / B, one line per run, with Prandtl's c N_c of each phi."""
+    plt = report.pyplot()
+    fig, ax = plt.subplots(figsize=(7.5, 4.6))
+    colours = {phi: c for phi, c in zip(phis, ['tab:blue', 'tab:red', 'tab:green', 'tab:purple'])}
+    for r in runs:
+        ranks = sorted(resolutions, reverse=True)
+        style = ['-', '--', '-.', (0, (5, 1, 1, 1, 1, 1))][min(ranks.index(r['B_over_d']), 3)]
+        if r['speed_m_per_s'] != speed:
+            style = ':'
+        label = f"phi = {r['phi_deg']:g}, B/d = {r['B_over_d']:g}"
+        if r['speed_m_per_s'] != speed:
+            label += f", {r['speed_m_per_s']:g} m/s"
+        if 'q_limit_over_cNc' in r:
+            label += f": {r['q_limit_over_cNc']:.3f} c N_c"
+        else:
+            label += ': stopped'
+        ax.plot(r['settlement'], r['q_over_c'], style, color=colours[r['phi_deg']], label=label)
+    for phi in phis:
+        ax.axhline(prandtl_nc(phi), color=colours[phi], lw=0.8, alpha=0.6)
+        ax.text(0.001, prandtl_nc(phi) + 0.15, f'Prandtl c N_c, phi = {phi:g}: {prandtl_nc(phi):.2f} c',
+                color=colours[phi], fontsize=7)
+    ax.axvspan(0.10, 0.15, color='0.9', zorder=0)
+    ax.set_xlabel('settlement / B')
+    ax.set_ylabel('q / c')
+    ax.set_title(f"Strip footing ({footing}) on weightless soil, psi = 0, E/c = 1000: "
+                 'q against Prandtl (grey: limit-pressure window)', fontsize=8)
+    ax.legend(fontsize=7, loc='center right')
+    ax.set_xlim(0.0, max(max(r['settlement']) for r in runs if r['settlement']))
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
+def public(r):
+    """A run's entry of the JSON: without the curve and the frame."""
+    return {k: v for k, v in r.items() if k not in ('settlement', 'q_over_c', 'frame')}
+
+
+def report_example(directory, log, variables, seconds):
+    """run_example's numbers and plot of the one push (phi and B/d of the input):
+    bearing_capacity.json, bearing_capacity.png."""
+    phi, c = float(variables['phi']), float(variables['c'])
+    resolution = round(B / float(variables['d']), 6)
+    r = measure(directory, phi, resolution, float(variables['speed']), c, variables['slip'],
+                variables['tension'], 0, seconds, log)
+    report.write_json(public(r), os.path.join(directory, 'bearing_capacity.json'), indent=1, end='')
+    curves_plot([r], r['speed_m_per_s'], [phi], [resolution],
+                'smooth' if variables['slip'] == 'freeslip' else 'rough', os.path.join(directory, 'bearing_capacity.png'))
+
+
+def add_arguments(p):
+    runner.add_arguments(p)
     p.add_argument('--resolutions', type=float, nargs='+', default=[10, 20], help='B / d')
     p.add_argument('--phis', type=float, nargs='+', default=[0.0, 20.0])
     p.add_argument('--speed', type=float, default=0.1, help='push speed (m/s), B = 1 m')
@@ -131,22 +180,22 @@ def main():
     p.add_argument('--plot', default=os.path.join(EXDIR, 'bearing_capacity.png'))
     p.add_argument('--mechanism', default=os.path.join(EXDIR, 'bearing_capacity_mechanism.png'))
     p.add_argument('--doc', action='store_true', help='copy plot and picture to doc/img/')
-    args = p.parse_args()
-    args.lmp = os.path.abspath(args.lmp)
 
+
+def main(args):
+    lmp = runner.from_arguments(args)
     runs = []
     for phi in args.phis:
         for resolution in sorted(args.resolutions):
-            runs.append(run(args, phi, resolution, args.speed))
+            runs.append(run(lmp, args, phi, resolution, args.speed))
         if args.check_speed:
-            runs.append(run(args, phi, min(args.resolutions), 0.5 * args.speed))
+            runs.append(run(lmp, args, phi, min(args.resolutions), 0.5 * args.speed))
     summary = {'definition': 'limit pressure: mean of q over the last third of the push '
                              '(settlement 0.10-0.15 B); q = the footing particles\' reaction / B',
                'footing': 'smooth' if args.slip == 'freeslip' else 'rough',
                'tension_cutoff_Pa': args.tension, 'box_width_over_B': args.width,
                'box_depth_over_B': args.depth,
-               'runs': [{k: v for k, v in r.items() if k not in ('settlement', 'q_over_c', 'frame')}
-                        for r in runs]}
+               'runs': [public(r) for r in runs]}
     for r in summary['runs']:
         if 'q_limit_over_cNc' in r:
             r['error_percent'] = round(100.0 * (r['q_limit_over_cNc'] - 1.0), 2)
@@ -160,42 +209,11 @@ def main():
                 checks.append({'phi_deg': phi, 'B_over_d': min(args.resolutions),
                                'q_limit_half_over_full': round(half[0]['q_limit_Pa'] / base[0]['q_limit_Pa'], 4)})
         summary['speed_check'] = checks
-    print(json.dumps(summary, indent=1))
-    if args.json:
-        json.dump(summary, open(args.json, 'w'), indent=1)
+    report.write_json(summary, args.json, indent=1, end='')
 
-    import matplotlib
-    matplotlib.use('Agg')
-    import matplotlib.pyplot as plt
+    plt = report.pyplot()
     if args.plot:
-        fig, ax = plt.subplots(figsize=(7.5, 4.6))
-        colours = {phi: c for phi, c in zip(args.phis, ['tab:blue', 'tab:red', 'tab:green', 'tab:purple'])}
-        for r in runs:
-            ranks = sorted(args.resolutions, reverse=True)
-            style = ['-', '--', '-.', (0, (5, 1, 1, 1, 1, 1))][min(ranks.index(r['B_over_d']), 3)]
-            if r['speed_m_per_s'] != args.speed:
-                style = ':'
-            label = f"phi = {r['phi_deg']:g}, B/d = {r['B_over_d']:g}"
-            if r['speed_m_per_s'] != args.speed:
-                label += f", {r['speed_m_per_s']:g} m/s"
-            if 'q_limit_over_cNc' in r:
-                label += f": {r['q_limit_over_cNc']:.3f} c N_c"
-            else:
-                label += ': stopped'
-            ax.plot(r['settlement'], r['q_over_c'], style, color=colours[r['phi_deg']], label=label)
-        for phi in args.phis:
-            ax.axhline(prandtl_nc(phi), color=colours[phi], lw=0.8, alpha=0.6)
-            ax.text(0.001, prandtl_nc(phi) + 0.15, f'Prandtl c N_c, phi = {phi:g}: {prandtl_nc(phi):.2f} c',
-                    color=colours[phi], fontsize=7)
-        ax.axvspan(0.10, 0.15, color='0.9', zorder=0)
-        ax.set_xlabel('settlement / B')
-        ax.set_ylabel('q / c')
-        ax.set_title(f"Strip footing ({summary['footing']}) on weightless soil, psi = 0, E/c = 1000: "
-                     'q against Prandtl (grey: limit-pressure window)', fontsize=8)
-        ax.legend(fontsize=7, loc='center right')
-        ax.set_xlim(0.0, max(max(r['settlement']) for r in runs if r['settlement']))
-        fig.tight_layout()
-        fig.savefig(args.plot, dpi=110)
+        curves_plot(runs, args.speed, args.phis, args.resolutions, summary['footing'], args.plot)
     if args.mechanism:
         finest = [r for r in runs if r['B_over_d'] == max(args.resolutions) and r['speed_m_per_s'] == args.speed
                   and r['frame']]
@@ -211,12 +229,8 @@ def main():
             fig.tight_layout()
             fig.savefig(args.mechanism, dpi=110)
     if args.doc:
-        img = os.path.join(ROOT, 'doc', 'img')
+        img = paths.DOC_IMG
         if args.plot:
             shutil.copy(args.plot, os.path.join(img, 'bearing_capacity.png'))
         if args.mechanism and os.path.exists(args.mechanism):
             shutil.copy(args.mechanism, os.path.join(img, 'bearing_capacity_mechanism.png'))
-
-
-if __name__ == '__main__':
-    main()

@@ -1,5 +1,5 @@
-"""Analysis of 2D SPH_SOIL dumps shared by tools/validate_aluminium_bars.py and
-tools/compare_refinement.py: reading a dump, the free surface, the runout, the failure line.
+"""Analysis of the runs' results shared by the studies: in 2D dumps the free surface, the runout
+and the failure line; in time series the late movement that tells a failing run from one at rest.
 
 Free surface: the surface of the continuum that the particles represent.
 
@@ -21,17 +21,6 @@ import math
 import numpy as np
 
 LEVEL = 0.5
-
-
-def read_dump(path):
-    """Last snapshot of a LAMMPS text dump as a dict of column name -> numpy array."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    start = max(i for i, l in enumerate(lines) if l.startswith('ITEM: ATOMS'))
-    names = lines[start].split()[2:]
-    rows = [l.split() for l in lines[start + 1:] if l.strip() and not l.startswith('ITEM')]
-    data = np.array(rows, dtype=float).reshape(-1, len(names))
-    return {n: data[:, k] for k, n in enumerate(names)}
 
 
 def failure_line(x0, y0, moved, spacing, height):
@@ -115,3 +104,26 @@ def runout(x, y, volume, h, threshold, spacing):
     top = surface_height(x, y, volume, h, grid)
     high = grid[top > threshold]
     return float(high.max()) if len(high) else 0.0, grid, top
+
+
+def particle_top(x, y, at, spacing):
+    """Top of the particles within one spacing of each position (0 where there are none)."""
+    heights = np.zeros(len(at))
+    for k, xa in enumerate(at):
+        near = np.abs(x - xa) <= spacing
+        heights[k] = y[near].max() + 0.5 * spacing if near.any() else 0.0
+    return heights
+
+
+def runout_particle_top(x, y, spacing, threshold=0.002):
+    """Furthest x (particle edge) whose column still stands higher than the threshold."""
+    edges = np.arange(0.0, x.max() + 2 * spacing, spacing)
+    top = particle_top(x, y, edges, 0.5 * spacing)
+    high = edges[top > threshold]
+    return float(high.max() + 0.5 * spacing) if len(high) else 0.0
+
+
+def late_movement(time_values, moved, late=0.3):
+    """How far the monitored displacement grows over the last `late` share of the run."""
+    window = time_values >= (1.0 - late) * time_values[-1]
+    return float(moved[window][-1] - moved[window][0])

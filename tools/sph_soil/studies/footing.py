@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Load-settlement curve of examples/footing against the bearing capacity of a rough strip footing.
 
 Reads footing.dat (fix ave/time: step, time, applied pressure q, settlement, the soil's pressure
@@ -10,17 +9,21 @@ on the footing), prints a JSON summary and writes a plot:
     characteristics (Martin 2005; associated flow), the reference, and beside it the textbook
     formulas (Meyerhof, Hansen, Vesic), whose spread shows how uncertain N_gamma is.
 
-  tools/plot_footing.py --dat examples/footing/footing.dat [--dat other.dat --label ...]
+  python3 -m sph_soil footing --dat examples/footing/footing.dat [--dat other.dat --label ...]
       [--phi 30] [--gamma 18148.5] [--width 0.2] [--plot footing.png] [--json footing.json]
 """
-import argparse
-import json
 import math
+import os
 
 import numpy as np
 
+from .. import report
+from ..dumps import read_ave_time
+
+COMMAND = 'footing'
 # N_gamma of a rough strip footing, method of characteristics (Martin 2005), by phi in degrees
 MARTIN_ROUGH = {20: 2.84, 25: 6.49, 30: 14.75, 35: 34.48, 40: 85.57}
+GAMMA, WIDTH = 1850 * 9.81, 0.2     # examples/footing: unit weight (N/m^3), B (m)
 
 
 def textbook_n_gamma(phi_deg):
@@ -32,7 +35,7 @@ def textbook_n_gamma(phi_deg):
 
 
 def read(path):
-    data = np.loadtxt(path, comments='#')
+    data = read_ave_time(path)
     return {'time': data[:, 1], 'q': data[:, 2], 'settlement': data[:, 3], 'reaction': data[:, 4]}
 
 
@@ -47,46 +50,32 @@ def pressure_at(curve, settlement):
     return float(np.interp(settlement, [s[k - 1], s[k]], [q[k - 1], q[k]]))
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    parser.add_argument('--dat', action='append', required=True)
-    parser.add_argument('--label', action='append')
-    parser.add_argument('--phi', type=float, default=30.0)
-    parser.add_argument('--gamma', type=float, default=1850 * 9.81)
-    parser.add_argument('--width', type=float, default=0.2)
-    parser.add_argument('--plot')
-    parser.add_argument('--json')
-    args = parser.parse_args()
-    labels = args.label or [p for p in args.dat]
-    n_gamma = MARTIN_ROUGH.get(int(round(args.phi)))
-    scale = 0.5 * args.gamma * args.width
+def footing(dats, labels=None, phi=30.0, gamma=GAMMA, width=WIDTH, plot=None, json_path=None):
+    labels = labels or [p for p in dats]
+    n_gamma = MARTIN_ROUGH.get(int(round(phi)))
+    scale = 0.5 * gamma * width
     q_u = scale * n_gamma if n_gamma else None
-    summary = {'phi': args.phi, 'B': args.width, 'gamma': args.gamma, 'N_gamma_Martin_rough': n_gamma,
+    summary = {'phi': phi, 'B': width, 'gamma': gamma, 'N_gamma_Martin_rough': n_gamma,
                'q_u_Martin': q_u,
-               'q_u_textbook': {k: scale * v for k, v in textbook_n_gamma(args.phi).items()},
+               'q_u_textbook': {k: scale * v for k, v in textbook_n_gamma(phi).items()},
                'runs': []}
     curves = []
-    for path, label in zip(args.dat, labels):
+    for path, label in zip(dats, labels):
         curve = read(path)
         curves.append((label, curve))
         run = {'label': label, 'file': path}
         for fraction in (0.05, 0.1):
-            q = pressure_at(curve, fraction * args.width)
+            q = pressure_at(curve, fraction * width)
             run['q_at_%g_B' % fraction] = q
             run['q_at_%g_B_over_q_u' % fraction] = q / q_u if (q is not None and q_u) else None
         summary['runs'].append(run)
-    print(json.dumps(summary, indent=2))
-    if args.json:
-        with open(args.json, 'w') as f:
-            json.dump(summary, f, indent=2)
-    if args.plot:
-        import matplotlib
-        matplotlib.use('Agg')
-        import matplotlib.pyplot as plt
+    report.write_json(summary, json_path, indent=2, end='')
+    if plot:
+        plt = report.pyplot()
         fig, ax = plt.subplots(figsize=(7, 4.5))
         for label, curve in curves:
-            ax.plot(curve['settlement'] / args.width, curve['q'] / 1000, label='%s: applied' % label)
-            ax.plot(curve['settlement'] / args.width, curve['reaction'] / 1000, ':',
+            ax.plot(curve['settlement'] / width, curve['q'] / 1000, label='%s: applied' % label)
+            ax.plot(curve['settlement'] / width, curve['reaction'] / 1000, ':',
                     label='%s: soil on footing' % label)
         if q_u:
             ax.axhline(q_u / 1000, color='k', lw=1,
@@ -97,12 +86,30 @@ def main():
         ax.set_xlim(0, 0.5)
         ax.set_xlabel('settlement / B')
         ax.set_ylabel('pressure (kPa)')
-        ax.set_title(r'Rigid rough strip footing on sand, $\phi$ = %g$^\circ$, B = %g m' % (args.phi, args.width))
+        ax.set_title(r'Rigid rough strip footing on sand, $\phi$ = %g$^\circ$, B = %g m' % (phi, width))
         ax.legend(fontsize=7, loc='lower right')
         ax.grid(alpha=0.3)
         fig.tight_layout()
-        fig.savefig(args.plot, dpi=120)
+        fig.savefig(plot, dpi=120)
+    return summary
 
 
-if __name__ == '__main__':
-    main()
+def report_example(directory, log, variables, seconds):
+    """run_example's numbers and plot: footing.json, footing.png."""
+    footing([os.path.join(directory, 'footing.dat')], [f"d = {100 * float(variables['d']):g} cm"],
+            phi=float(variables['phi']), plot=os.path.join(directory, 'footing.png'),
+            json_path=os.path.join(directory, 'footing.json'))
+
+
+def add_arguments(p):
+    p.add_argument('--dat', action='append', required=True)
+    p.add_argument('--label', action='append')
+    p.add_argument('--phi', type=float, default=30.0)
+    p.add_argument('--gamma', type=float, default=GAMMA)
+    p.add_argument('--width', type=float, default=WIDTH)
+    p.add_argument('--plot')
+    p.add_argument('--json')
+
+
+def main(args):
+    footing(args.dat, args.label, args.phi, args.gamma, args.width, args.plot, args.json)

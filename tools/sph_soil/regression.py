@@ -1,8 +1,7 @@
-#!/usr/bin/python3
 """Run an example in its short mode and compare its thermo output with a reference log.
 
-    tools/regression.py --lmp build/lmp --example aluminium_bars --np 2 [--mpirun mpirun]
-    tools/regression.py ... --update      # (re)write the reference log instead
+    python3 -m sph_soil regression --lmp build/lmp --example aluminium_bars --np 2 [--mpirun mpirun]
+    python3 -m sph_soil regression ... --update      # (re)write the reference log instead
 
 The example runs in a scratch directory (--workdir) as
     mpirun -np N lmp -in examples/NAME/in.NAME -var short 1 [extra -var settings]
@@ -22,63 +21,17 @@ Measured: a reordering of the pair sums (same physics) moves that count by up to
 soil_collapse short run while every continuous column stays within 1e-6.
 'Step' and 'Atoms' must match exactly.
 """
-import argparse
 import glob
 import os
-import re
 import shutil
-import subprocess
 import sys
-import time
 
+from . import paths, runner
+from .logs import Log, release_key
+
+COMMAND = 'regression'
 RTOL = 1.0e-6
 ATOL = 1.0e-12
-
-
-def thermo_table(path):
-    """The last thermo table of a LAMMPS log: (column names, rows of floats)."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    header, rows, tables = None, [], []
-    for line in lines:
-        words = line.split()
-        if words and words[0] == 'Step':
-            header, rows = words, []
-            continue
-        if header is not None:
-            if line.startswith('Loop time'):
-                tables.append((header, rows))
-                header = None
-                continue
-            try:
-                values = [float(w) for w in words]
-            except ValueError:
-                continue
-            if len(values) == len(header):
-                rows.append(values)
-    if header is not None and rows:
-        tables.append((header, rows))
-    if not tables:
-        raise SystemExit(f'regression: no thermo table in {path}')
-    return tables[-1]
-
-
-MONTHS = 'Jan Feb Mar Apr May Jun Jul Aug Sep Oct Nov Dec'.split()
-
-
-def lammps_release(path):
-    """The release that wrote a log, from its first line 'LAMMPS (4 Jul 2026 ...)': '4Jul26'."""
-    with open(path) as f:
-        m = re.match(r'LAMMPS \((\d+) (\w+) (\d{4})', f.readline())
-    if not m:
-        raise SystemExit(f'regression: {path} does not start with a LAMMPS version line')
-    return f'{m.group(1)}{m.group(2)}{m.group(3)[2:]}'
-
-
-def release_key(release):
-    """Sort key of '4Jul26': (2026, 7, 4)."""
-    m = re.match(r'(\d+)([A-Za-z]{3})(\d{2})$', release)
-    return (2000 + int(m.group(3)), MONTHS.index(m.group(2)) + 1, int(m.group(1))) if m else (0, 0, 0)
 
 
 def reference_log(exdir, name, np, release):
@@ -92,6 +45,7 @@ def reference_log(exdir, name, np, release):
 
 
 def compare(ref, new):
+    """The differences of two thermo tables beyond the tolerance, one line each."""
     (rh, rrows), (nh, nrows) = ref, new
     problems = []
     if rh != nh:
@@ -116,54 +70,51 @@ def compare(ref, new):
     return problems
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument('--lmp', required=True)
+def read(path, what):
+    """Log(path).what(), stopping with the reader's message when the log lacks it."""
+    try:
+        return getattr(Log(path), what)()
+    except ValueError as e:
+        raise SystemExit(f'regression: {e}')
+
+
+def add_arguments(p):
+    runner.add_arguments(p, np=1)
     p.add_argument('--example', required=True)
-    p.add_argument('--np', type=int, default=1)
-    p.add_argument('--mpirun', default='mpirun')
     p.add_argument('--workdir', default=None)
     p.add_argument('--var', action='append', default=[], help='extra NAME=VALUE input variables')
     p.add_argument('--input', default=None, help='input file in the example directory (default: in.<example>)')
     p.add_argument('--name', default=None, help='name of the reference logs (default: the example), '
                    'for several variants of one example')
     p.add_argument('--update', action='store_true', help='write the reference log instead of comparing')
-    a = p.parse_args()
 
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    exdir = os.path.join(root, 'examples', a.example)
+
+def main(a):
+    lmp = runner.from_arguments(a)
+    exdir = paths.example_dir(a.example)
     infile = os.path.join(exdir, a.input or f'in.{a.example}')
     name = a.name or a.example
     work = a.workdir or os.path.join(os.getcwd(), f'regression_{name}_np{a.np}')
     shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    cmd = [a.mpirun, '-np', str(a.np), os.path.abspath(a.lmp), '-in', infile, '-var', 'short', '1',
-           '-log', 'log.short', '-screen', 'none']
-    for v in a.var:
-        var_name, value = v.split("=", 1)
-        cmd += ["-var", var_name, value]
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT='1', OMPI_ALLOW_RUN_AS_ROOT_CONFIRM='1')
-    start = time.time()
-    run = subprocess.run(cmd, cwd=work, env=env)
-    if run.returncode != 0:
-        log = os.path.join(work, 'log.short')
-        if os.path.exists(log):
-            sys.stdout.write(''.join(open(log).readlines()[-20:]))
-        raise SystemExit(f'regression: {" ".join(cmd)} failed with exit code {run.returncode}')
-    print(f'regression: {a.example} short run on {a.np} rank(s) took {time.time() - start:.1f} s')
-    log = os.path.join(work, 'log.short')
-    new = thermo_table(log)
-    release = lammps_release(log)
+    variables = [('short', '1')] + [tuple(v.split('=', 1)) for v in a.var]
+    run = lmp.run(infile, work, np=a.np, variables=variables, log='log.short')
+    if not run.ok:
+        if os.path.exists(run.log):
+            sys.stdout.write(''.join(open(run.log).readlines()[-20:]))
+        raise SystemExit(f'regression: {" ".join(run.command)} failed with exit code {run.returncode}')
+    print(f'regression: {a.example} short run on {a.np} rank(s) took {run.seconds:.1f} s')
+    new = read(run.log, 'last_thermo_table')
+    release = read(run.log, 'release')
 
     if a.update:
         target = os.path.join(exdir, f'log.{release}.{name}.short.{a.np}')
-        shutil.copy(log, target)
+        shutil.copy(run.log, target)
         print(f'regression: reference written to {target}')
         return
     ref = reference_log(exdir, name, a.np, release)
     if not ref:
         raise SystemExit(f'regression: no reference log examples/{a.example}/log.*.{name}.short.{a.np}')
-    problems = compare(thermo_table(ref), new)
+    problems = compare(read(ref, 'last_thermo_table'), new)
     if problems:
         print(f'regression: {name} np {a.np} (LAMMPS {release}) differs from {os.path.basename(ref)}:')
         for line in problems[:20]:
@@ -172,6 +123,3 @@ def main():
     print(f'regression: {name} np {a.np} (LAMMPS {release}) matches {os.path.basename(ref)} '
           f'({len(new[1])} rows x {len(new[0])} columns, rtol {RTOL})')
 
-
-if __name__ == '__main__':
-    main()

@@ -1,8 +1,7 @@
-#!/usr/bin/python3
 """Earth pressure on the retaining wall of examples/retaining_wall against Rankine and Coulomb.
 
-    tools/plot_retaining_wall.py [--phi 30] [--height 1] [--json out.json] [--plot out.png]
-                                 LABEL=wall_force.dat[@DELTA] [LABEL=wall_force.dat[@DELTA] ...]
+    python3 -m sph_soil retaining-wall [--phi 30] [--height 1] [--json out.json] [--plot out.png]
+                                       LABEL=wall_force.dat[@DELTA] [LABEL=wall_force.dat[@DELTA] ...]
 
 Reads the fix ave/time files of in.retaining_wall (time, wall displacement, force, K = force /
 (0.5 gamma H^2)); DELTA is the wall's friction angle in degrees (-var delta of the example,
@@ -16,16 +15,19 @@ was pushed into it passive. For each run it reports
     with s = +1 active, -1 passive (vertical wall, horizontal surface);
 prints them as JSON and plots K against the wall's displacement over H.
 """
-import argparse
-import json
 import math
+import os
 
 import numpy as np
 
+from .. import report
+from ..dumps import read_ave_time
+
+COMMAND = 'retaining-wall'
+
 
 def read(path):
-    rows = [list(map(float, line.split())) for line in open(path) if line.strip() and not line.startswith('#')]
-    data = np.array(rows)
+    data = read_ave_time(path)
     return data[:, 2], data[:, 4]    # displacement, K
 
 
@@ -37,19 +39,13 @@ def limit(phi_deg, delta_deg, passive):
     return k * math.cos(delta)
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument('runs', nargs='+', help='LABEL=FILE[@DELTA]')
-    p.add_argument('--phi', type=float, default=30.0)
-    p.add_argument('--height', type=float, default=1.0)
-    p.add_argument('--json')
-    p.add_argument('--plot')
-    a = p.parse_args()
-    k0 = 1.0 - math.sin(math.radians(a.phi))
-    result = {'phi_deg': a.phi, 'K0': k0, 'Ka': limit(a.phi, 0.0, False), 'Kp': limit(a.phi, 0.0, True),
+def earth_pressure(runs, phi=30.0, height=1.0, json_path=None, plot=None):
+    """runs: LABEL=FILE[@DELTA] each."""
+    k0 = 1.0 - math.sin(math.radians(phi))
+    result = {'phi_deg': phi, 'K0': k0, 'Ka': limit(phi, 0.0, False), 'Kp': limit(phi, 0.0, True),
               'runs': {}}
     curves = []
-    for run in a.runs:
+    for run in runs:
         label, path = run.rsplit('=', 1) if '=' in run else (run, run)
         delta = 0.0
         if '@' in path:
@@ -60,7 +56,7 @@ def main():
         passive = travel < 0.0
         rest = k[shift == 0.0]
         final = k[np.abs(shift) >= 0.9 * abs(travel)] if travel != 0.0 else k[-1:]
-        reference = limit(a.phi, delta, passive)
+        reference = limit(phi, delta, passive)
         r = {'wall': 'passive' if passive else 'active', 'delta_deg': delta,
              'K_at_rest': float(rest.mean()) if len(rest) else None,
              'at_rest_over_K0': float(rest.mean() / k0) if len(rest) else None,
@@ -68,17 +64,13 @@ def main():
              'K_limit': reference,
              'limit': ('Rankine' if delta == 0.0 else 'Coulomb') + (' Kp' if passive else ' Ka'),
              'final_over_limit': float(final.mean() / reference),
-             'travel_over_H': float(abs(travel) / a.height)}
+             'travel_over_H': float(abs(travel) / height)}
         result['runs'][label] = r
         moved = shift != 0.0
-        curves.append((label, np.abs(shift[moved]) / a.height, k[moved], r))
-    print(json.dumps(result, indent=1))
-    if a.json:
-        json.dump(result, open(a.json, 'w'), indent=1)
-    if a.plot:
-        import matplotlib
-        matplotlib.use('Agg')
-        import matplotlib.pyplot as plt
+        curves.append((label, np.abs(shift[moved]) / height, k[moved], r))
+    report.write_json(result, json_path, indent=1, end='')
+    if plot:
+        plt = report.pyplot()
         kinds = [kind for kind in ('active', 'passive') if any(c[3]['wall'] == kind for c in curves)]
         fig, axes = plt.subplots(1, len(kinds), figsize=(6.5 * len(kinds), 4.2), squeeze=False)
         for ax, kind in zip(axes[0], kinds):
@@ -96,14 +88,32 @@ def main():
             ax.text(0.1, k0, f'K0 = 1 - sin(phi) = {k0:.3f}', color='grey', fontsize=7, va='bottom')
             ax.set_xlabel('wall displacement / H (%)')
             ax.set_ylabel('K = horizontal force / (0.5 gamma H^2)')
-            ax.set_title(f"{kind.capitalize()} earth pressure, phi = {a.phi:g} deg", fontsize=10)
+            ax.set_title(f"{kind.capitalize()} earth pressure, phi = {phi:g} deg", fontsize=10)
             ax.legend(fontsize=7, loc='upper right' if kind == 'active' else 'lower right')
             if kind == 'active':
                 ax.set_ylim(0.2, 0.6)
         fig.tight_layout()
-        fig.savefig(a.plot, dpi=110)
-        print(f'plot written to {a.plot}')
+        fig.savefig(plot, dpi=110)
+        print(f'plot written to {plot}')
+
+    return result
 
 
-if __name__ == '__main__':
-    main()
+def report_example(directory, log, variables, seconds):
+    """run_example's numbers and plot: retaining_wall.json, retaining_wall.png."""
+    label = f"d = {100 * float(variables['d']):g} cm"
+    earth_pressure([f"{label}={os.path.join(directory, 'wall_force.dat')}@{variables['delta']}"],
+                   phi=float(variables['phi']), json_path=os.path.join(directory, 'retaining_wall.json'),
+                   plot=os.path.join(directory, 'retaining_wall.png'))
+
+
+def add_arguments(p):
+    p.add_argument('runs', nargs='+', help='LABEL=FILE[@DELTA]')
+    p.add_argument('--phi', type=float, default=30.0)
+    p.add_argument('--height', type=float, default=1.0)
+    p.add_argument('--json')
+    p.add_argument('--plot')
+
+
+def main(a):
+    earth_pressure(a.runs, a.phi, a.height, a.json, a.plot)
