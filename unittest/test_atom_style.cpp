@@ -12,7 +12,7 @@
 #include <sstream>
 
 using namespace LAMMPS_NS;
-using namespace SphSoilTesting;
+using namespace SPHSoilTesting;
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <regex>
 
 using namespace LAMMPS_NS;
-using namespace SphSoilTesting;
+using namespace SPHSoilTesting;
 
 namespace {
 
@@ -161,7 +161,8 @@ std::vector<BadInput> cases()
   // ---- pair_coeff: materials on the command line and in files
   error("CoeffTooFewArguments", "patch", {}, "pair_coeff 1 1",
         "Incorrect args for pair_coeff sph/soil: expected 'I I soil rho0 model parameters' (models: "
-        "drucker_prager, mohr_coulomb), 'I I wall' or '* * file name1 ... name2'");
+        "drucker_prager K nu phi psi c [fit exact|associated|nonassociated] [tension T]; "
+        "mohr_coulomb K nu phi psi c), 'I I wall' or '* * file name1 ... name2'");
   error("CoeffSoilParameterCount", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0",
         "Incorrect args for pair_coeff sph/soil: material of type(s) 1: drucker_prager needs 5 "
         "parameters (K nu phi psi c), got 4");

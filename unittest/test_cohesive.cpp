@@ -10,7 +10,7 @@
 #include <cmath>
 
 using namespace LAMMPS_NS;
-using namespace SphSoilTesting;
+using namespace SPHSoilTesting;
 
 namespace {
 

@@ -13,12 +13,12 @@ using namespace SPHSoil;
 namespace {
 constexpr double PI = 3.14159265358979323846;
 
-template <class Kernel> class Kernels : public ::testing::Test {};
+template <class Kernel> class EachKernel : public ::testing::Test {};
 using KernelTypes = ::testing::Types<CubicSpline, WendlandC2>;
 struct KernelNames {
   template <class Kernel> static std::string GetName(int) { return Kernel::NAME; }
 };
-TYPED_TEST_SUITE(Kernels, KernelTypes, KernelNames);
+TYPED_TEST_SUITE(EachKernel, KernelTypes, KernelNames);
 
 // integral of W over R^D using the radial form: 2 pi r W dr (2D), 4 pi r^2 W dr (3D),
 // composite Simpson on [0, 2h] split at q = 1 (the cubic spline's kink)
@@ -39,7 +39,7 @@ template <class Kernel> double radial_integral(int dimension, double h, int n)
 }
 }    // namespace
 
-TYPED_TEST(Kernels, NormalisedIn2DAnd3D)
+TYPED_TEST(EachKernel, NormalisedIn2DAnd3D)
 {
   for (double h : {0.001, 0.37, 2.5}) {
     EXPECT_NEAR(radial_integral<TypeParam>(2, h, 2000), 1.0, 1.0e-6) << "2D, h = " << h;
@@ -47,7 +47,7 @@ TYPED_TEST(Kernels, NormalisedIn2DAnd3D)
   }
 }
 
-TYPED_TEST(Kernels, NormalisedOnA2DCartesianGrid)
+TYPED_TEST(EachKernel, NormalisedOnA2DCartesianGrid)
 {
   // a direct 2D quadrature (not using radial symmetry): midpoint rule on a fine grid
   const double h = 1.0;
@@ -62,7 +62,7 @@ TYPED_TEST(Kernels, NormalisedOnA2DCartesianGrid)
   EXPECT_NEAR(sum, 1.0, 1.0e-5);
 }
 
-TYPED_TEST(Kernels, CompactSupportAndContinuity)
+TYPED_TEST(EachKernel, CompactSupportAndContinuity)
 {
   const double support = TypeParam::SUPPORT;
   for (int dim : {2, 3}) {
@@ -84,7 +84,7 @@ TEST(Kernels, CentralValues)
   EXPECT_NEAR(WendlandC2::value(3, 0.0, 1.0), 21.0 / (16.0 * PI), 1e-15);
 }
 
-TYPED_TEST(Kernels, DerivativesMatchFiniteDifferences)
+TYPED_TEST(EachKernel, DerivativesMatchFiniteDifferences)
 {
   const double h = 0.3, eps = 1.0e-6;
   for (int dim : {2, 3}) {
@@ -102,7 +102,7 @@ TYPED_TEST(Kernels, DerivativesMatchFiniteDifferences)
   }
 }
 
-TYPED_TEST(Kernels, GradientOfAnOffsetKernelMatchesFiniteDifferencesIn3D)
+TYPED_TEST(EachKernel, GradientOfAnOffsetKernelMatchesFiniteDifferencesIn3D)
 {
   // grad W(x) = x * gradient_factor(|x|), checked component-wise
   const double h = 0.7, eps = 1e-6;
@@ -116,7 +116,7 @@ TYPED_TEST(Kernels, GradientOfAnOffsetKernelMatchesFiniteDifferencesIn3D)
   for (int k = 0; k < 3; k++) EXPECT_NEAR(g * x[k], fd[k], 1e-7);
 }
 
-TYPED_TEST(Kernels, SecondDerivativeChangesSignAtTheInflection)
+TYPED_TEST(EachKernel, SecondDerivativeChangesSignAtTheInflection)
 {
   const double q = TypeParam::INFLECTION;
   for (int dim : {2, 3}) {
@@ -126,7 +126,7 @@ TYPED_TEST(Kernels, SecondDerivativeChangesSignAtTheInflection)
   }
 }
 
-TYPED_TEST(Kernels, GradientFactorInsideTheSupportAgrees)
+TYPED_TEST(EachKernel, GradientFactorInsideTheSupportAgrees)
 {
   for (double h : {0.0012, 0.7, 3.0})
     for (double q = 0.01; q < 2.0; q += 0.037) {
@@ -138,7 +138,7 @@ TYPED_TEST(Kernels, GradientFactorInsideTheSupportAgrees)
     }
 }
 
-TYPED_TEST(Kernels, ChosenByItsName)
+TYPED_TEST(EachKernel, ChosenByItsName)
 {
   KernelKind kind;
   ASSERT_TRUE(kernel_kind(TypeParam::NAME, kind));
@@ -149,8 +149,35 @@ TYPED_TEST(Kernels, ChosenByItsName)
   EXPECT_EQ(kernel_gradient_factor(kind, 3, 0.3, 0.7), TypeParam::gradient_factor(3, 0.3, 0.7));
 }
 
-TEST(Kernels, UnknownNameIsRefused)
+TEST(KernelRegistry, UnknownNameIsRefused)
 {
   KernelKind kind;
   EXPECT_FALSE(kernel_kind("gaussian", kind));
+  EXPECT_EQ(kernel_names(), "cubic, wendland2");
+}
+
+// A new kernel is its header and one name in the registry's list: a registry of the package's
+// kernels and a dummy one knows the dummy's name, finds it and dispatches to it, with nothing
+// else written for it.
+struct DummyKernel {
+  static constexpr const char *NAME = "dummy";
+  static constexpr double SUPPORT = 3.0;
+};
+struct SupportOf {
+  template <class Kernel> double operator()() const { return Kernel::SUPPORT; }
+};
+
+TEST(KernelRegistry, ARegisteredDummyKernelIsKnownByItsNameAndDispatchedTo)
+{
+  using WithDummy = KernelRegistry<CubicSpline, WendlandC2, DummyKernel>;
+  EXPECT_EQ(WithDummy::COUNT, 3);
+  EXPECT_EQ(WithDummy::names(), "cubic, wendland2, dummy");
+  ASSERT_EQ(WithDummy::find("dummy"), 2);
+  EXPECT_EQ(WithDummy::find("wendland2"), 1);
+  EXPECT_EQ(WithDummy::find("gaussian"), -1);
+  EXPECT_EQ(WithDummy::dispatch(2, SupportOf()), 3.0);
+  EXPECT_EQ(WithDummy::dispatch(1, SupportOf()), double(WendlandC2::SUPPORT));
+  // the package's own registry is the same template over its list
+  EXPECT_EQ(Kernels::COUNT, 2);
+  EXPECT_EQ(Kernels::dispatch(0, SupportOf()), double(CubicSpline::SUPPORT));
 }

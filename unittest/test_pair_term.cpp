@@ -1,6 +1,7 @@
 // The pair term's pieces that are not covered by the LAMMPS-level tests: the mirrored stress of
 // a free-slip wall image.
-#include "sph_soil_pair_term.h"
+#include "soil_pair_terms.h"
+#include "soil_wall_images.h"
 
 #include "gtest/gtest.h"
 

@@ -16,7 +16,7 @@
 #include <set>
 
 using namespace LAMMPS_NS;
-using namespace SphSoilTesting;
+using namespace SPHSoilTesting;
 
 namespace {
 
@@ -256,22 +256,44 @@ TEST_F(Refinement, SkinsThatFollowHMissNoPairWithinTheSupport)
   EXPECT_LT(builds, 20);
 }
 
-// Without fix sph/soil nothing asks LAMMPS to reneighbour for a daughter's smaller skin, so
-// the pair style gives every pair the whole neighbor skin: the list holds exactly the pairs
-// within h_i + h_j + skin (the cubic spline's support 2 h_ij plus the skin), daughters too.
-TEST_F(Refinement, WithoutTheIntegratorEveryPairGetsTheWholeSkin)
+// The list's skin policy belongs to the pair style (its internal fix SPH_SOIL_SKIN), not to
+// the integrator: daughters moved by another integrator (fix nve) still get skins in proportion
+// to their h, and LAMMPS reneighbours when one has moved half of it. At every step every pair
+// within its support is listed, and nothing beyond h_i + h_j + the pair's own skin.
+TEST_F(Refinement, WithoutFixSPHSoilSkinsFollowHAndMissNoPair)
 {
   patch(2, 12, true);
+  HIDE_OUTPUT([&] {
+    command("variable fast_x atom (x<0.06)*0.15*sin(2*PI*y/0.03)");
+    command("variable fast_y atom (x<0.06)*0.15*sin(2*PI*x/0.03)");
+    command("velocity all set v_fast_x v_fast_y NULL units box");
+    command("neighbor 0.0001 bin");
+  });
   refine_left_of(0.06);
-  HIDE_OUTPUT([&] { command("run 0 post no"); });
+  HIDE_OUTPUT([&] {
+    command("fix move_them all nve");
+    command("timestep 2e-5");
+    command("run 0 post no");
+  });
   auto avec = dynamic_cast<AtomVecSPHSoil *>(lmp->atom->avec);
-  const double *h = avec->smoothing_length;
   const double skin = lmp->neighbor->skin;
+  const double *h0 = avec->smoothing_length;
+  double max_h = 0.0, max_all = 0.0;
+  for (int i = 0; i < lmp->atom->nlocal; i++) max_h = std::max(max_h, h0[i]);
+  MPI_Allreduce(&max_h, &max_all, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  // at the build: the pair's own skin, skin h_ij / max(h), not the whole skin
   bigint listed_beyond = -1;
-  const auto counts = pairs_within([&](int i, int j) { return (h[i] + skin) + h[j]; }, &listed_beyond);
-  EXPECT_EQ(counts[0], counts[1]);
+  const double *h = avec->smoothing_length;
+  pairs_within([&](int i, int j) { return (h[i] + h[j]) * (1.0 + 0.5 * skin / max_all) * (1.0 + 1e-12); },
+               &listed_beyond);
   EXPECT_EQ(listed_beyond, 0);
-  EXPECT_GT(counts[0], 0);
+  const bigint builds_at_start = lmp->neighbor->ncalls;
+  for (int step = 1; step <= 40; step++) {
+    HIDE_OUTPUT([&] { command("run 1 pre no post no"); });
+    const auto counts = pairs_within([&](int i, int j) { return h[i] + h[j]; });
+    ASSERT_EQ(counts[0], counts[1]) << "pairs within the support missing from the list at step " << step;
+  }
+  EXPECT_GT(lmp->neighbor->ncalls - builds_at_start, 5);
 }
 
 TEST_F(Refinement, SplitsConserveMassMomentumEnergyAndAngularMomentum)

@@ -15,7 +15,7 @@
 #include <cmath>
 
 using namespace LAMMPS_NS;
-using namespace SphSoilTesting;
+using namespace SPHSoilTesting;
 
 namespace {
 
@@ -130,7 +130,7 @@ TEST_F(SoilPhysics, WendlandKernelRunConservesMomentum)
   });
   auto pair = dynamic_cast<LAMMPS_NS::PairSPHSoil *>(lmp->force->pair);
   ASSERT_NE(pair, nullptr);
-  EXPECT_EQ(pair->kernel_kind(), SPHSoil::KernelKind::wendland2);
+  EXPECT_STREQ(SPHSoil::kernel_name(pair->kernel_kind()), "wendland2");
   auto before = totals();
   HIDE_OUTPUT([&] { command("run 500 post no"); });
   auto after = totals();

@@ -1,5 +1,5 @@
-// The geometry of one split and the CSPM interpolation (soil_split.h), without LAMMPS.
-#include "soil_split.h"
+// The geometry of one split and the CSPM interpolation (soil_refine_split.h), without LAMMPS.
+#include "soil_refine_split.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,9 @@
 
 #include "atom.h"
 #include "error.h"
-#include "soil_split.h"
+#include "input.h"
+#include "utils.h"
+#include "soil_refine_split.h"
 #include "sph_soil_compat.h"
 
 #include <cmath>
@@ -29,6 +31,7 @@ const char *const STRAIN_RATE_NAME = "sph_soil_strain_rate";
 const char *const SPIN_NAME = "sph_soil_spin";
 const char *const LEVEL_NAME = "sph_soil_level";
 const char *const WALL_DISTANCE_NAME = "sph_soil_wall_distance";
+const char *const SAVED_RATES_NAME = "sph_soil_saved_rates";
 
 // What compute property/atom can read: name, array, column (-1 for a vector).
 enum Field { H, RHO, DRHO, STRESS, STRESS_RATE, STRAIN, STRAIN_RATE, SPIN, LEVEL, WALL_N, WALL_D, VEST };
@@ -74,12 +77,15 @@ AtomVecSPHSoil::Arrays *arrays_of(const Atom *atom)
 
 }    // namespace
 
+// (a definition for C++11, where LAMMPS 29Sep2021 compiles: the value is passed by reference)
+constexpr int AtomVecSPHSoil::RESTART_FORMAT;
+
 /* ---------------------------------------------------------------------- */
 
 AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
     AtomVec(lmp), smoothing_length(nullptr), stress(nullptr), stress_rate(nullptr),
     total_strain(nullptr), strain_rate(nullptr), spin(nullptr), level(nullptr),
-    wall_normal(nullptr), wall_distance(nullptr), rmass(nullptr), rho(nullptr), drho(nullptr),
+    wall_normal(nullptr), wall_distance(nullptr), saved_rates(nullptr), rmass(nullptr), rho(nullptr), drho(nullptr),
     vest(nullptr), arrays(arrays_of(atom))
 {
   molecular = Atom::ATOMIC;
@@ -96,7 +102,7 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
 
   // read_restart and a second atom_style command re-create the AtomVec: an entry of the
   // previous instance then follows the new arrays
-  using SphSoilCompat::set_peratom;
+  using SPHSoilCompat::set_peratom;
   set_peratom(atom, H_NAME, &arrays->smoothing_length, Atom::DOUBLE, 0);
   set_peratom(atom, STRESS_NAME, &arrays->stress, Atom::DOUBLE, NVOIGT);
   set_peratom(atom, STRESS_RATE_NAME, &arrays->stress_rate, Atom::DOUBLE, NVOIGT);
@@ -105,6 +111,7 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   set_peratom(atom, SPIN_NAME, &arrays->spin, Atom::DOUBLE, NSPIN);
   set_peratom(atom, LEVEL_NAME, &arrays->level, Atom::INT, 0);
   set_peratom(atom, WALL_DISTANCE_NAME, &arrays->wall_distance, Atom::DOUBLE, 0);
+  set_peratom(atom, SAVED_RATES_NAME, &arrays->saved_rates, Atom::DOUBLE, NSAVED);
 
   // Which fields travel where (why):
   //  comm (every step):  rho, stress, vest   - the pair sum needs them from ghosts (and the
@@ -115,7 +122,7 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   //                      predictor and the force evaluation, which recomputes the other
   //                      rates, while the corrector still needs the stress rate of the
   //                      step's start (fix sph/soil carries its own saved rates)
-  //  restart:            the whole state (fix sph/soil writes the rates)
+  //  restart:            the whole state with the rates saved at the end of the last run
   //  data file:          the whole state, see doc/atom_style_sph_soil.rst
   const std::vector<std::string> rates = {"drho", STRESS_RATE_NAME, STRAIN_RATE_NAME, SPIN_NAME};
   const std::vector<std::string> state = {"rmass",     "rho",       H_NAME,     "vest",
@@ -123,11 +130,12 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
                                           WALL_DISTANCE_NAME};
   std::vector<std::string> all = state;
   all.insert(all.end(), rates.begin(), rates.end());
+  all.push_back(SAVED_RATES_NAME);
   const std::vector<std::string> comm = {"rho", STRESS_NAME, "vest"};
   const std::vector<std::string> border = {"rmass", "rho", STRESS_NAME,       "vest",
                                            H_NAME,  "mu",  WALL_DISTANCE_NAME};
 
-  using SphSoilCompat::assign_fields;
+  using SPHSoilCompat::assign_fields;
   assign_fields(fields_grow, all, field_storage[0]);
   assign_fields(fields_copy, all, field_storage[1]);
   assign_fields(fields_comm, comm, field_storage[2]);
@@ -138,8 +146,11 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   assign_fields(fields_border_vel, border, field_storage[6]);
   std::vector<std::string> exchange = state;
   exchange.push_back(STRESS_RATE_NAME);
+  exchange.push_back(SAVED_RATES_NAME);
   assign_fields(fields_exchange, exchange, field_storage[7]);
-  assign_fields(fields_restart, state, field_storage[8]);
+  std::vector<std::string> restart = state;
+  restart.push_back(SAVED_RATES_NAME);
+  assign_fields(fields_restart, restart, field_storage[8]);
   assign_fields(fields_create, all, field_storage[9]);
   // Data files: LAMMPS 29Sep2021 reads lines of at most 255 characters, room for about ten
   // full-precision numbers. The particle definition goes to Atoms, the stress (the state a
@@ -154,11 +165,44 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
 
 /* ---------------------------------------------------------------------- */
 
+/* ----------------------------------------------------------------------
+   the style takes no arguments from a user; its own 'format N' rides in the restart file (LAMMPS
+   stores an atom style's arguments there), so that read_restart, which re-creates the style from
+   them, learns the layout of the file's per-atom data before it reads any. Under atom_style
+   hybrid the hybrid style's arguments are stored instead, and the check is not made.
+------------------------------------------------------------------------- */
+
 void AtomVecSPHSoil::process_args(int narg, char **arg)
 {
-  if (narg > 0)
+  const bool sub_style = atom->avec != this;    // of atom_style hybrid
+  if (narg == 2 && strcmp(arg[0], "format") == 0) {
+    const int format = utils::inumeric(FLERR, arg[1], false, lmp);
+    if (format != RESTART_FORMAT)
+      error->all(FLERR, "Restart file holds atom_style sph/soil data of format {}; this build of "
+                        "SPH_SOIL reads format {}: read it with the build that wrote it and save "
+                        "the state with write_data", format, RESTART_FORMAT);
+  } else if (narg > 0) {
     error->all(FLERR, "Illegal atom_style sph/soil command: it takes no arguments, got '{}'",
                arg[0]);
+  } else if (!sub_style && input->command && strcmp(input->command, "read_restart") == 0) {
+    error->all(FLERR, "Restart file holds atom_style sph/soil data without a format number, "
+                      "written before 2026-12-03 (format 1); this build of SPH_SOIL reads format {}: "
+                      "read it with the build that wrote it and save the state with write_data",
+               RESTART_FORMAT);
+  }
+  if (!sub_style) store_format_args();
+}
+
+// the arguments that write_restart stores with the style's name: "format N"
+void AtomVecSPHSoil::store_format_args()
+{
+  const std::string format = std::to_string(RESTART_FORMAT);
+  char *args[2] = {const_cast<char *>("format"), const_cast<char *>(format.c_str())};
+  for (int i = 0; i < nargcopy; i++) delete[] argcopy[i];
+  delete[] argcopy;
+  argcopy = nullptr;
+  nargcopy = 0;
+  store_args(2, args);
 }
 
 /* ----------------------------------------------------------------------
@@ -177,6 +221,7 @@ void AtomVecSPHSoil::grow_pointers()
   level = arrays->level;
   wall_normal = atom->mu;
   wall_distance = arrays->wall_distance;
+  saved_rates = arrays->saved_rates;
   rmass = atom->rmass;
   rho = atom->rho;
   drho = atom->drho;
@@ -213,18 +258,18 @@ void AtomVecSPHSoil::data_atom_post(int ilocal)
 {
   const tagint id = atom->tag[ilocal];
   if (!(rmass[ilocal] > 0.0) || !std::isfinite(rmass[ilocal]))
-    SphSoilCompat::error_one(lmp, FLERR,
+    SPHSoilCompat::error_one(lmp, FLERR,
                "Invalid mass {} of atom {} in Atoms section of data file: must be finite and > 0",
                rmass[ilocal], id);
   if (!(smoothing_length[ilocal] >= 0.0) || !std::isfinite(smoothing_length[ilocal]))
-    SphSoilCompat::error_one(lmp, FLERR,
+    SPHSoilCompat::error_one(lmp, FLERR,
                "Invalid smoothing length h {} of atom {} in Atoms section of data file: must be >= 0",
                smoothing_length[ilocal], id);
   if (!(rho[ilocal] > 0.0) || !std::isfinite(rho[ilocal]))
-    SphSoilCompat::error_one(lmp, FLERR, "Invalid density {} of atom {} in Atoms section of data file: must be > 0",
+    SPHSoilCompat::error_one(lmp, FLERR, "Invalid density {} of atom {} in Atoms section of data file: must be > 0",
                rho[ilocal], id);
   if (level[ilocal] < 0 || level[ilocal] > SPHSoil::MAX_LEVEL)
-    SphSoilCompat::error_one(lmp, FLERR,
+    SPHSoilCompat::error_one(lmp, FLERR,
                "Invalid refinement level {} of atom {} in Atoms section of data file: must be in 0 "
                "to {}", level[ilocal], id, SPHSoil::MAX_LEVEL);
   drho[ilocal] = 0.0;
@@ -234,20 +279,21 @@ void AtomVecSPHSoil::data_atom_post(int ilocal)
   for (int k = 0; k < NVOIGT; k++)
     stress[ilocal][k] = stress_rate[ilocal][k] = total_strain[ilocal][k] = strain_rate[ilocal][k] = 0.0;
   for (int k = 0; k < NSPIN; k++) spin[ilocal][k] = 0.0;
+  for (int k = 0; k < NSAVED; k++) saved_rates[ilocal][k] = 0.0;
 }
 
 /* ----------------------------------------------------------------------
    a line of the Velocities section: velocity and stress, which must be finite
 ------------------------------------------------------------------------- */
 
-void AtomVecSPHSoil::data_vel(int ilocal, SphSoilCompat::DataVelValues values)
+void AtomVecSPHSoil::data_vel(int ilocal, SPHSoilCompat::DataVelValues values)
 {
   AtomVec::data_vel(ilocal, values);
   double sum = 0.0;
   for (int k = 0; k < NVOIGT; k++) sum += stress[ilocal][k];
   for (int k = 0; k < 3; k++) sum += atom->v[ilocal][k];
   if (!std::isfinite(sum))
-    SphSoilCompat::error_one(lmp, FLERR,
+    SPHSoilCompat::error_one(lmp, FLERR,
                "Invalid velocity or stress of atom {} in Velocities section of data file: must be "
                "finite (got velocity {} {} {}, stress {} {} {} {} {} {})", atom->tag[ilocal],
                atom->v[ilocal][0], atom->v[ilocal][1], atom->v[ilocal][2], stress[ilocal][0],
@@ -259,7 +305,7 @@ void AtomVecSPHSoil::data_vel(int ilocal, SphSoilCompat::DataVelValues values)
    index of a named per-atom property for compute property/atom, or -1
 ------------------------------------------------------------------------- */
 
-int AtomVecSPHSoil::property_atom(SphSoilCompat::PropertyAtomName name)
+int AtomVecSPHSoil::property_atom(SPHSoilCompat::PropertyAtomName name)
 {
   const std::string wanted(name);
   for (int i = 0; i < NPROPERTIES; i++)

@@ -30,8 +30,8 @@ class AtomVecSPHSoil : public AtomVec {
   void force_clear(int, size_t) override;
   void create_atom_post(int) override;
   void data_atom_post(int) override;
-  void data_vel(int, SphSoilCompat::DataVelValues) override;
-  int property_atom(SphSoilCompat::PropertyAtomName) override;
+  void data_vel(int, SPHSoilCompat::DataVelValues) override;
+  int property_atom(SPHSoilCompat::PropertyAtomName) override;
   void pack_property_atom(int, double *, int, int) override;
 
   // Per-atom arrays owned by this style (registered with Atom::add_peratom; the
@@ -49,6 +49,24 @@ class AtomVecSPHSoil : public AtomVec {
   double **wall_normal;        // Atom's mu: unit normal into the soil (and 1) for wall
                                // particles, else 0; see the constructor
   double *wall_distance;       // distance of a wall particle behind the wall surface
+  // the rates of the last step of the last run (fix sph/soil's post_run), which the first half
+  // step of the next run uses instead of those that its set-up recomputes from the full-step
+  // state: so a continued or restarted run is identical to an uninterrupted one. They travel
+  // with the atom (and into restart files), whichever fix integrates it. SAVED_FLAG is 1 while
+  // they are there to be used; 0 after a data file, create_atoms or sph_soil/set.
+  double **saved_rates;
+  enum {
+    SAVED_FLAG = 0,
+    SAVED_ACCELERATION = 1,    // 3
+    SAVED_DRHO = 4,
+    SAVED_STRAIN_RATE = 5,     // 6
+    SAVED_STRESS_RATE = 11,    // 6
+    NSAVED = 17
+  };
+
+  // The layout of this style's per-atom restart data has a number; a restart file of another
+  // number stops read_restart with a message that names both (process_args()).
+  static constexpr int RESTART_FORMAT = 2;
 
   struct Arrays {
     double *smoothing_length = nullptr;
@@ -56,6 +74,7 @@ class AtomVecSPHSoil : public AtomVec {
     double **strain_rate = nullptr, **spin = nullptr;
     int *level = nullptr;
     double *wall_distance = nullptr;
+    double **saved_rates = nullptr;
   };
 
   // Core Atom arrays with the same meaning as in atom_style sph.
@@ -67,6 +86,7 @@ class AtomVecSPHSoil : public AtomVec {
  private:
   Arrays *arrays;    // the registered pointers
   std::string field_storage[12];
+  void store_format_args();
 };
 
 }    // namespace LAMMPS_NS

@@ -14,6 +14,7 @@
 #include "modify.h"
 #include "pair_sph_soil.h"
 #include "soil_constitutive.h"
+#include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
 #include "update.h"
@@ -33,14 +34,10 @@ constexpr double BIG = 1.0e30;
 
 FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), cfl(0.0), stable_cfl(0.2), max_dt(0.0), avec(nullptr), pair(nullptr),
-    yielded_count(0), integrator_state(nullptr), allocated_rows(0), restore_pending(false)
+    yielded_count(0), integrator_state(nullptr), restore_pending(false)
 {
   time_integrate = 1;
-  // the pair style's skins follow h (reneighbour_if_skin_used())
-  force_reneighbor = 1;
-  next_reneighbor = -1;
   restart_global = 1;
-  restart_peratom = 1;
   vector_flag = 1;
   size_vector = 3;
   global_freq = 1;
@@ -50,11 +47,11 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal fix sph/soil command: keyword {} needs a value", arg[iarg]);
     if (strcmp(arg[iarg], "cfl") == 0) {
-      cfl = SphSoilInput::number(FLERR, lmp, "fix sph/soil cfl", arg[iarg + 1],
-                                 SphSoilInput::between(0.0, 1.0, true, false));
+      cfl = SPHSoilInput::number(FLERR, lmp, "fix sph/soil cfl", arg[iarg + 1],
+                                 SPHSoilInput::between(0.0, 1.0, true, false));
     } else if (strcmp(arg[iarg], "dtmax") == 0) {
-      max_dt = SphSoilInput::number(FLERR, lmp, "fix sph/soil dtmax", arg[iarg + 1],
-                                    SphSoilInput::above(0.0));
+      max_dt = SPHSoilInput::number(FLERR, lmp, "fix sph/soil dtmax", arg[iarg + 1],
+                                    SPHSoilInput::above(0.0));
     } else {
       error->all(FLERR, "Illegal fix sph/soil keyword {} (allowed: cfl, dtmax)", arg[iarg]);
     }
@@ -73,7 +70,6 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -81,7 +77,6 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
 FixSPHSoil::~FixSPHSoil()
 {
   atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
   memory->destroy(integrator_state);
 }
 
@@ -89,7 +84,7 @@ FixSPHSoil::~FixSPHSoil()
 
 int FixSPHSoil::setmask()
 {
-  return INITIAL_INTEGRATE | POST_INTEGRATE | FINAL_INTEGRATE | END_OF_STEP;
+  return INITIAL_INTEGRATE | FINAL_INTEGRATE | END_OF_STEP;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -101,25 +96,16 @@ void FixSPHSoil::init()
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
 
   model_of_type.assign(atom->ntypes + 1, nullptr);
-  wall_type.assign(atom->ntypes + 1, 0);
-  for (int type = 1; type <= atom->ntypes; type++) {
-    model_of_type[type] = pair->model(type);
-    wall_type[type] = pair->is_wall_type(type) ? 1 : 0;
-  }
+  for (int type = 1; type <= atom->ntypes; type++) model_of_type[type] = pair->model(type);
 
   // one integrator per particle: two fixes sph/soil over the same particles would each
   // advance them, a step of 2 dt
   const int *mask = atom->mask;
-  // the first fix sph/soil passes the walls' velocities on (a second would see vest = v and
-  // take the walls' acceleration for 0)
-  first_integrator = true;
-  const int me = modify->find_fix(id);
   for (int ifix = 0; ifix < modify->nfix; ifix++) {
     const Fix *other = modify->fix[ifix];
-    if (other == this || strcmp(other->style, "sph/soil") != 0) continue;
-    if (ifix < me) first_integrator = false;
+    if (other == this || !dynamic_cast<const FixSPHSoil *>(other)) continue;
     const int otherbit = other->groupbit;
-    const auto twice = SphSoilOffenders::find_offenders(
+    const auto twice = SPHSoilOffenders::find_offenders(
         lmp, [&](int i) { return (mask[i] & groupbit) && (mask[i] & otherbit); },
         [](int, double *) {});
     if (twice)
@@ -142,7 +128,6 @@ void FixSPHSoil::init()
   for (int i = 0; i < nlocal; i++)
     if (integrated(i))
       for (int k = 0; k < 3; k++) atom->vest[i][k] = atom->v[i][k];
-  walls_velocity_to_estimate(true);
 
   if (cfl > 0.0) {
     const double dt = stable_timestep();
@@ -172,6 +157,7 @@ void FixSPHSoil::reset_dt()
 
 void FixSPHSoil::setup(int /*vflag*/)
 {
+  restore_pending = true;
   const int nlocal = atom->nlocal;
   for (int i = 0; i < nlocal; i++)
     if (integrated(i))
@@ -198,10 +184,7 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
 
   if (restore_pending) {
     for (int i = 0; i < nlocal; i++)
-      if (integrator_state[i][SAVED] != 0.0) {
-        if (integrated(i)) restore_rates(i);
-        integrator_state[i][SAVED] = 0.0;
-      }
+      if (integrated(i) && avec->saved_rates[i][AtomVecSPHSoil::SAVED_FLAG] != 0.0) restore_rates(i);
     restore_pending = false;
   }
 
@@ -233,52 +216,6 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
       first_unstable = i;
   }
   stop_if_unstable(first_unstable);
-}
-
-/* ----------------------------------------------------------------------
-   The pair style reads every particle's velocity from vest (the field that travels to
-   ghosts every step). A wall particle's is its own velocity, which a fix that moves walls
-   (move, rigid, ...) has set by now, whatever the order of the fixes; 0 for a wall at rest.
-   The first fix sph/soil does it for all wall particles: walls belong to no soil group.
-------------------------------------------------------------------------- */
-
-void FixSPHSoil::post_integrate()
-{
-  walls_velocity_to_estimate(false);
-  reneighbour_if_skin_used();
-}
-
-/* ----------------------------------------------------------------------
-   The pair style's list gives a particle of smaller h a smaller skin, which LAMMPS's check
-   (one skin, the largest particles') does not know: LAMMPS reneighbours at this step if some
-   particle (soil or wall, moved by any fix) has moved half its own skin. The first fix
-   sph/soil does it, after every fix has moved its atoms and before Neighbor::decide(); not
-   while every particle has the largest h (then LAMMPS's check is this one).
-------------------------------------------------------------------------- */
-
-void FixSPHSoil::reneighbour_if_skin_used()
-{
-  if (!first_integrator || !pair->skin_check_needed()) return;
-  const int outdated = pair->neighbours_outdated() ? 1 : 0;
-  int anywhere = 0;
-  MPI_Allreduce(&outdated, &anywhere, 1, MPI_INT, MPI_MAX, world);
-  if (anywhere) next_reneighbor = update->ntimestep;
-}
-
-// vest holds the wall's velocity of the step before: the difference is its acceleration
-void FixSPHSoil::walls_velocity_to_estimate(bool start)
-{
-  if (!first_integrator) return;
-  double **v = atom->v, **vest = atom->vest;
-  const int *type = atom->type;
-  const int nlocal = atom->nlocal;
-  const double inv_dt = 1.0 / update->dt;
-  for (int i = 0; i < nlocal; i++)
-    if (wall_type[type[i]])
-      for (int k = 0; k < 3; k++) {
-        integrator_state[i][WALL_ACCELERATION + k] = start ? 0.0 : (v[i][k] - vest[i][k]) * inv_dt;
-        vest[i][k] = v[i][k];
-      }
 }
 
 /* ----------------------------------------------------------------------
@@ -336,7 +273,7 @@ bool FixSPHSoil::unstable(int i) const
 // coordinates at the next neighbour-list build, and after the corrector.
 void FixSPHSoil::stop_if_unstable(int first_unstable)
 {
-  const auto unstable = SphSoilOffenders::reduce_offenders(
+  const auto unstable = SPHSoilOffenders::reduce_offenders(
       lmp, first_unstable >= 0 ? 1 : 0, first_unstable, [&](int i, double *values) {
         values[0] = atom->rho[i];
         for (int a = 0; a < 3; a++) values[1 + a] = atom->v[i][a];
@@ -399,44 +336,41 @@ void FixSPHSoil::adapt_timestep()
 }
 
 /* ----------------------------------------------------------------------
-   keep the rates of the last step for the next run (see the header)
+   keep the rates of the last step for the next run (the atom style's saved_rates)
 ------------------------------------------------------------------------- */
 
 void FixSPHSoil::post_run()
 {
-  const int nlocal = atom->nlocal;
-  for (int i = 0; i < nlocal; i++) {
-    if (integrated(i)) save_rates(i, integrator_state[i] + SAVED);
-    else integrator_state[i][SAVED] = 0.0;
-  }
-  restore_pending = true;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (integrated(i)) save_rates(i);
 }
 
-/* ---------------------------------------------------------------------- */
-
-// into a saved block (the row's, or a restart buffer's): block[0] = flag, then the rates at
-// the offsets they have in the row
-void FixSPHSoil::save_rates(int i, double *block) const
+void FixSPHSoil::save_rates(int i) const
 {
-  block[0] = 1.0;
+  using A = AtomVecSPHSoil;
+  double *saved = avec->saved_rates[i];
+  saved[A::SAVED_FLAG] = 1.0;
   const double inv_mass = 1.0 / atom->rmass[i];
-  for (int a = 0; a < 3; a++) block[SAVED_ACCELERATION - SAVED + a] = atom->f[i][a] * inv_mass;
-  block[SAVED_DRHO - SAVED] = atom->drho[i];
+  for (int a = 0; a < 3; a++) saved[A::SAVED_ACCELERATION + a] = atom->f[i][a] * inv_mass;
+  saved[A::SAVED_DRHO] = atom->drho[i];
   for (int k = 0; k < 6; k++) {
-    block[SAVED_STRAIN_RATE - SAVED + k] = avec->strain_rate[i][k];
-    block[SAVED_STRESS_RATE - SAVED + k] = avec->stress_rate[i][k];
+    saved[A::SAVED_STRAIN_RATE + k] = avec->strain_rate[i][k];
+    saved[A::SAVED_STRESS_RATE + k] = avec->stress_rate[i][k];
   }
 }
 
+// (used once: the flag goes back to 0)
 void FixSPHSoil::restore_rates(int i)
 {
-  const double *row = integrator_state[i];
-  for (int a = 0; a < 3; a++) atom->f[i][a] = row[SAVED_ACCELERATION + a] * atom->rmass[i];
-  atom->drho[i] = row[SAVED_DRHO];
+  using A = AtomVecSPHSoil;
+  double *saved = avec->saved_rates[i];
+  for (int a = 0; a < 3; a++) atom->f[i][a] = saved[A::SAVED_ACCELERATION + a] * atom->rmass[i];
+  atom->drho[i] = saved[A::SAVED_DRHO];
   for (int k = 0; k < 6; k++) {
-    avec->strain_rate[i][k] = row[SAVED_STRAIN_RATE + k];
-    avec->stress_rate[i][k] = row[SAVED_STRESS_RATE + k];
+    avec->strain_rate[i][k] = saved[A::SAVED_STRAIN_RATE + k];
+    avec->stress_rate[i][k] = saved[A::SAVED_STRESS_RATE + k];
   }
+  saved[A::SAVED_FLAG] = 0.0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -444,9 +378,6 @@ void FixSPHSoil::restore_rates(int i)
 void FixSPHSoil::grow_arrays(int nmax)
 {
   memory->grow(integrator_state, nmax, NSTATE, "sph/soil:integrator_state");
-  // new rows hold nothing to restore (atoms made later by create_atoms etc.)
-  for (int i = allocated_rows; i < nmax; i++) integrator_state[i][SAVED] = 0.0;
-  allocated_rows = nmax;
 }
 
 void FixSPHSoil::copy_arrays(int i, int j, int /*delflag*/)
@@ -454,20 +385,16 @@ void FixSPHSoil::copy_arrays(int i, int j, int /*delflag*/)
   for (int k = 0; k < NSTATE; k++) integrator_state[j][k] = integrator_state[i][k];
 }
 
-// the saved block only when it holds something
 int FixSPHSoil::pack_exchange(int i, double *buf)
 {
-  const int n = integrator_state[i][SAVED] != 0.0 ? NSTATE : SAVED + 1;
-  for (int k = 0; k < n; k++) buf[k] = integrator_state[i][k];
-  return n;
+  for (int k = 0; k < NSTATE; k++) buf[k] = integrator_state[i][k];
+  return NSTATE;
 }
 
 int FixSPHSoil::unpack_exchange(int nlocal, double *buf)
 {
-  const int n = buf[SAVED] != 0.0 ? NSTATE : SAVED + 1;
-  for (int k = 0; k < n; k++) integrator_state[nlocal][k] = buf[k];
-  if (n == NSTATE) restore_pending = true;
-  return n;
+  for (int k = 0; k < NSTATE; k++) integrator_state[nlocal][k] = buf[k];
+  return NSTATE;
 }
 
 /* ----------------------------------------------------------------------
@@ -476,63 +403,51 @@ int FixSPHSoil::unpack_exchange(int nlocal, double *buf)
    every version
 ------------------------------------------------------------------------- */
 
+// the record: -RESTART_FORMAT (an older record began with the elapsed time, >= 0), the elapsed
+// time, the step. Called on every rank before the atoms are written: a restart file written
+// during a run (the restart command) saves the rates of the last step with the atoms, as the end
+// of a run does; one written between runs has those of the last run (or none before the first,
+// when no force has been computed yet).
 void FixSPHSoil::write_restart(FILE *fp)
 {
-  double list[2] = {update->atime + (update->ntimestep - update->atimestep) * update->dt,
+  if (update->whichflag == 1)
+    for (int i = 0; i < atom->nlocal; i++)
+      if (integrated(i)) save_rates(i);
+  double list[3] = {-(double) RESTART_FORMAT,
+                    update->atime + (update->ntimestep - update->atimestep) * update->dt,
                     (double) update->ntimestep};
   if (comm->me == 0) {
     int size = sizeof(list);
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 2, fp);
+    fwrite(list, sizeof(double), 3, fp);
   }
 }
 
 void FixSPHSoil::restart(char *buf)
 {
   const auto *list = reinterpret_cast<const double *>(buf);
+  const int format = list[0] < 0.0 ? (int) -list[0] : 1;
+  if (format != RESTART_FORMAT)
+    error->all(FLERR, "Fix sph/soil {}: the restart file holds its data in format {}; this build of "
+                      "SPH_SOIL reads format {}", id, format, RESTART_FORMAT);
   // a reset_timestep since the restart file was read starts the clock anew
-  if ((bigint) list[1] != update->ntimestep) return;
-  update->atime = list[0];
+  if ((bigint) list[2] != update->ntimestep) return;
+  update->atime = list[1];
   update->atimestep = update->ntimestep;
 }
 
-/* ----------------------------------------------------------------------
-   restart files: the current rates (between runs they are those of the last step)
-------------------------------------------------------------------------- */
-
-int FixSPHSoil::pack_restart(int i, double *buf)
-{
-  // buf[0] is the count of values including itself, the way other fixes read it; then the
-  // saved block (flag and rates), the current rates
-  buf[0] = NSAVED + 2;
-  save_rates(i, &buf[1]);
-  if (!integrated(i)) buf[1] = 0.0;
-  return NSAVED + 2;
-}
-
-void FixSPHSoil::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
-  for (int k = 0; k <= NSAVED; k++) integrator_state[nlocal][SAVED + k] = extra[nlocal][m++];
-  if (integrator_state[nlocal][SAVED] != 0.0) restore_pending = true;
-}
-
-int FixSPHSoil::maxsize_restart()
-{
-  return NSAVED + 2;
-}
-
-int FixSPHSoil::size_restart(int /*nlocal*/)
-{
-  return NSAVED + 2;
-}
+// (a definition for C++11, where LAMMPS 29Sep2021 compiles: the value is passed by reference)
+constexpr int FixSPHSoil::RESTART_FORMAT;
 
 double FixSPHSoil::memory_usage()
 {
   return (double) atom->nmax * NSTATE * sizeof(double);
+}
+
+void *FixSPHSoil::extract(const char *name, int &dim)
+{
+  dim = 0;
+  return strcmp(name, SPHSoilFixes::INTEGRATOR) == 0 ? (void *) this : nullptr;
 }
 
 /* ----------------------------------------------------------------------

@@ -5,7 +5,8 @@
    velocities, a Heun predictor-corrector for density, accumulated strain
    and stress (doc/theory.rst section 4.1), each stress update followed by
    the constitutive model's return to the admissible set. Optional adaptive
-   time step from the CFL condition. Wall particles are never integrated.
+   time step from the CFL condition, for every fix. Wall particles are never
+   integrated (their kinematics are the pair style's: sph_soil_walls.h).
    See doc/fix_sph_soil.rst.
 ------------------------------------------------------------------------- */
 
@@ -37,33 +38,29 @@ class FixSPHSoil : public Fix {
   void init() override;
   void setup(int) override;
   void initial_integrate(int) override;
-  void post_integrate() override;
   void final_integrate() override;
   void end_of_step() override;
   void reset_dt() override;
   void post_run() override;
   double compute_vector(int) override;
-
-  // the acceleration of wall particle i (owned) over the last step, (v(t) - v(t - dt)) / dt,
-  // for walls that extrapolate the soil's stress (pair_style sph/soil: the inertia of a
-  // moving wall); 0 at the start of a run
-  const double *wall_acceleration(int i) const { return integrator_state[i] + WALL_ACCELERATION; }
+  // extract("sph_soil_integrator") (SPHSoilFixes::INTEGRATOR): this fix, for the package's code
+  // that finds fixes by what they do
+  void *extract(const char *, int &) override;
 
   // after particles were split (smaller h): adapt the time step (cfl), or stop with an error
   // if the user's fixed step is now above the stability limit
   void particles_refined(const char *who);
 
-  // the rates of the last step travel with the atoms, into restart files and the next run
+  // the Heun predictor's rates travel with the atoms (they migrate between the predictor and
+  // the corrector)
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
+  // the elapsed time, with a format number (see write_restart())
   void write_restart(FILE *) override;
   void restart(char *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int maxsize_restart() override;
-  int size_restart(int) override;
+  static constexpr int RESTART_FORMAT = 2;
   double memory_usage() override;
 
  protected:
@@ -74,38 +71,16 @@ class FixSPHSoil : public Fix {
   class AtomVecSPHSoil *avec;
   class PairSPHSoil *pair;
   std::vector<const SPHSoil::ConstitutiveModel *> model_of_type;    // owned by the pair style
-  std::vector<int> wall_type;    // per type: 1 for the pair style's wall types
-  bool first_integrator;   // the first fix sph/soil does it for all walls, and the skin check
-  void walls_velocity_to_estimate(bool start);
-  void reneighbour_if_skin_used();
   bigint yielded_count;
 
   // The integrator's own per-atom state, one row per atom (the current rates live in the atom
-  // style, where the pair style writes them):
-  //  - at the start of each step, the density rate and strain rate, for the Heun corrector;
-  //  - the rates of the last step (acceleration, density rate, strain rate, stress rate), saved
-  //    at the end of a run and in restart files, and used by the first half step of the next
-  //    run instead of the rates that setup recomputes from the full-step state: so a
-  //    restarted or continued run is identical to an uninterrupted one. SAVED is 1 when they
-  //    are there to be restored.
-  // Atoms migrate between the predictor and the corrector: the row travels with them.
-  // A wall particle's row holds its acceleration (the first 3 values) and nothing else.
-  enum {
-    WALL_ACCELERATION = 0,      // 3, wall particles only
-    HEUN_DRHO = 0,
-    HEUN_STRAIN_RATE = 1,       // 6
-    SAVED = 7,                  // the saved block: flag, then NSAVED rates
-    SAVED_ACCELERATION = 8,     // 3
-    SAVED_DRHO = 11,
-    SAVED_STRAIN_RATE = 12,     // 6
-    SAVED_STRESS_RATE = 18,     // 6
-    NSTATE = 24,
-    NSAVED = NSTATE - SAVED - 1
-  };
+  // style, where the pair style writes them): at the start of each step, the density rate and
+  // strain rate, for the Heun corrector. (The rates of the last step of a run, which the next
+  // run starts from, are the atom style's saved_rates.)
+  enum { HEUN_DRHO = 0, HEUN_STRAIN_RATE = 1, NSTATE = 7 };
   double **integrator_state;
-  int allocated_rows;
-  bool restore_pending;
-  void save_rates(int i, double *block) const;
+  bool restore_pending;    // at the first step of a run: restore the saved rates
+  void save_rates(int i) const;
   void restore_rates(int i);
 
   bool integrated(int i) const

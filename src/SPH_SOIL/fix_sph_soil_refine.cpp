@@ -17,11 +17,11 @@
 #include "region.h"
 #include "soil_constitutive.h"
 #include "soil_refine_error.h"
-#include "soil_split.h"
+#include "soil_refine_split.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_input.h"
 #include "sph_soil_refine_criterion.h"
-#include "sph_soil_splitter.h"
+#include "sph_soil_refine_splitter.h"
 #include "update.h"
 #include "utils.h"
 
@@ -50,7 +50,7 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
   nevery = utils::inumeric(FLERR, arg[3], false, lmp);
   if (nevery < 1) error->all(FLERR, "Illegal fix sph/soil/refine N {}: must be >= 1", nevery);
 
-  splitter.reset(new SPHSoilSplitter(lmp, STYLE));
+  splitter.reset(new SPHSoilRefineSplitter(lmp, STYLE));
   selection.reset(new SPHSoilRefineSelection(lmp, "fix sph/soil/refine", "strain"));
   for (int iarg = 4; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
@@ -61,11 +61,11 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
         splitter->parse_keyword("fix sph/soil/refine", keyword, value)) {
       continue;
     } else if (keyword == "maxlevel") {
-      maxlevel = SphSoilInput::integer(FLERR, lmp, "fix sph/soil/refine maxlevel", value, 1,
+      maxlevel = SPHSoilInput::integer(FLERR, lmp, "fix sph/soil/refine maxlevel", value, 1,
                                        SPHSoil::MAX_LEVEL);
     } else {
       error->all(FLERR, "Illegal fix sph/soil/refine keyword {} (allowed: {}, threshold, {}, "
-                        "maxlevel)", keyword, SPHSoilRefineSelection::KEYWORDS, SPHSoilSplitter::KEYWORDS);
+                        "maxlevel)", keyword, SPHSoilRefineSelection::KEYWORDS, SPHSoilRefineSplitter::KEYWORDS);
     }
   }
 
@@ -96,9 +96,8 @@ void FixSPHSoilRefine::init()
   selection->init();
 
   integrator = nullptr;
-  for (int ifix = 0; ifix < modify->nfix; ifix++)
-    if (strcmp(modify->fix[ifix]->style, "sph/soil") == 0)
-      integrator = dynamic_cast<FixSPHSoil *>(modify->fix[ifix]);
+  for (int ifix = 0; ifix < modify->nfix && !integrator; ifix++)
+    integrator = dynamic_cast<FixSPHSoil *>(modify->fix[ifix]);
   if (!integrator) error->all(FLERR, "Fix sph/soil/refine requires fix sph/soil");
 
   // wall particles carry the wall geometry; splitting them would break it
@@ -222,7 +221,7 @@ void FixSPHSoilRefine::report_parameters()
                       "gradient error E_a = {:.4g}, E_b = {:.4g} (1/d^{}); d_ij/d_ref = 1.0: {}, "
                       "0.85: {}{}\n", eps, alpha, ra_all, error_a, error_b, dimension,
                  describe(1.0), describe(0.85),
-                 kernel == KernelKind::cubic ? "" : std::string(" (kernel ") + kernel_name(kernel) + ")");
+                 kernel == KernelKind() ? "" : std::string(" (kernel ") + kernel_name(kernel) + ")");
   if (!stable_refinement(eps, alpha, ra_all, 1.0, inflection))
     error->warning(FLERR, "Fix sph/soil/refine: separation {} and smoothing {} (h/d = {:.4g}) are "
                           "in the unstable region for d_ij/d_ref = 1.0 ({}): expect clumps and "

@@ -40,7 +40,7 @@ class FixSPHSoilRefine : public Fix {
  protected:
   int maxlevel;          // particles at this level are not split again
   std::unique_ptr<class SPHSoilRefineSelection> selection;    // criterion, region
-  std::unique_ptr<class SPHSoilSplitter> splitter;
+  std::unique_ptr<class SPHSoilRefineSplitter> splitter;
   class FixSPHSoil *integrator;
   bool parameters_reported;
 

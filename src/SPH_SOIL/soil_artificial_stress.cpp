@@ -10,11 +10,10 @@ void SPHSoil::artificial_stress(const double stress[6], double density, double e
   double values[3], vectors[3][3];
   principal_stresses(stress, values, vectors);
   if (!(values[0] > 0.0)) return;    // no tension: descending, the largest is not positive
-  static const int row[6] = {0, 1, 2, 0, 0, 1}, col[6] = {0, 1, 2, 1, 2, 2};
   const double scale = -epsilon / (density * density);
   for (int i = 0; i < 3; i++) {
     if (!(values[i] > 0.0)) continue;
     const double r = scale * values[i];
-    for (int k = 0; k < 6; k++) R[k] += r * vectors[i][row[k]] * vectors[i][col[k]];
+    for (int k = 0; k < 6; k++) R[k] += r * vectors[i][VOIGT_ROW[k]] * vectors[i][VOIGT_COL[k]];
   }
 }

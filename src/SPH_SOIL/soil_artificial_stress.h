@@ -16,7 +16,7 @@
 #ifndef LMP_SOIL_ARTIFICIAL_STRESS_H
 #define LMP_SOIL_ARTIFICIAL_STRESS_H
 
-#include "soil_constitutive.h"
+#include "soil_tensor.h"
 
 namespace SPHSoil {
 

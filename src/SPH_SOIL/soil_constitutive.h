@@ -1,14 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPH_SOIL package: constitutive models of the soil (pure, no LAMMPS).
 
-   Conventions shared with pair_style sph/soil and fix sph/soil:
-   - stress is positive in tension;
-   - symmetric tensors are double[6] in Voigt order xx, yy, zz, xy, xz, yz
-     holding TENSOR components (strain rate xy = (g^xy + g^yx)/2, not the
-     engineering shear rate); always 6 components: in 2D plane strain
-     xz = yz = 0 and epsdot_zz = 0, while sigma_zz evolves;
-   - the spin is double[3] = omega_xy, omega_xz, omega_yz with
-     omega^ab = (g^ab - g^ba)/2, g^ab = dv^a/dx^b (so omega_yx = -omega_xy).
+   Conventions of tensors: soil_tensor.h.
 
    The integrator only talks to the abstract ConstitutiveModel. Models are
    chosen by keyword from the registry in soil_models.cpp: a new model is
@@ -20,99 +13,14 @@
 #ifndef LMP_SOIL_CONSTITUTIVE_H
 #define LMP_SOIL_CONSTITUTIVE_H
 
+#include "soil_numbers.h"
+#include "soil_tensor.h"
+
 #include <cmath>
 #include <string>
 #include <vector>
 
 namespace SPHSoil {
-
-/* ----------------------------------------------------------------------
-   invariants and measures of a Voigt tensor (inline: used in output loops)
-------------------------------------------------------------------------- */
-
-// first invariant I1 = trace
-inline double first_invariant(const double stress[6])
-{
-  return stress[0] + stress[1] + stress[2];
-}
-
-// mean stress I1/3 (negative in compression)
-inline double mean_stress(const double stress[6])
-{
-  return (stress[0] + stress[1] + stress[2]) / 3.0;
-}
-
-// pressure p = -I1/3 (positive in compression)
-inline double pressure(const double stress[6])
-{
-  return -mean_stress(stress);
-}
-
-// J2 = s^ab s^ab / 2 with s the deviatoric stress; the shear components count
-// twice in the full contraction
-inline double second_invariant(const double stress[6])
-{
-  const double mean = mean_stress(stress);
-  const double sxx = stress[0] - mean, syy = stress[1] - mean, szz = stress[2] - mean;
-  return 0.5 * (sxx * sxx + syy * syy + szz * szz) + stress[3] * stress[3] +
-         stress[4] * stress[4] + stress[5] * stress[5];
-}
-
-inline double sqrt_j2(const double stress[6])
-{
-  return std::sqrt(second_invariant(stress));
-}
-
-// the paper's refinement measure of the total strain: eps_xx^2 + eps_yy^2 + eps_zz^2
-inline double strain_measure(const double strain[6])
-{
-  return strain[0] * strain[0] + strain[1] * strain[1] + strain[2] * strain[2];
-}
-
-// equivalent shear strain sqrt(2 e^ab e^ab) of a strain (or strain-rate) tensor, e its
-// deviatoric part: gamma in simple shear (eps_xy = gamma / 2), blind to volume change; the
-// shear components count twice in the contraction, so it is 2 sqrt(J2) of the tensor
-inline double shear_strain(const double strain[6])
-{
-  return 2.0 * std::sqrt(second_invariant(strain));
-}
-
-/* ----------------------------------------------------------------------
-   Jaumann terms of the stress rate, sigma^ag omega^bg + sigma^gb omega^ag, i.e. the
-   matrix W sigma - sigma W with W^ab = omega^ab. Since W is antisymmetric and sigma
-   symmetric, (sigma W)^ab = -(W sigma)^ba, so the term is M^ab + M^ba with M = W sigma.
-   Under a rigid rotation x -> R x with dR/dt = W R this is exactly d(R sigma R^T)/dt.
-   Written into `rate` (not added).
-------------------------------------------------------------------------- */
-
-inline void jaumann_terms(const double stress[6], const double spin[3], double rate[6])
-{
-  // M = W sigma written out (W has zeros on the diagonal: no multiplications by them)
-  const double sxx = stress[0], syy = stress[1], szz = stress[2];
-  const double sxy = stress[3], sxz = stress[4], syz = stress[5];
-  const double wxy = spin[0], wxz = spin[1], wyz = spin[2];
-  const double m00 = wxy * sxy + wxz * sxz;
-  const double m11 = -wxy * sxy + wyz * syz;
-  const double m22 = -wxz * sxz - wyz * syz;
-  const double m01 = wxy * syy + wxz * syz, m10 = -wxy * sxx + wyz * sxz;
-  const double m02 = wxy * syz + wxz * szz, m20 = -wxz * sxx - wyz * sxy;
-  const double m12 = -wxy * sxz + wyz * szz, m21 = -wxz * sxy - wyz * syy;
-  rate[0] = 2.0 * m00;
-  rate[1] = 2.0 * m11;
-  rate[2] = 2.0 * m22;
-  rate[3] = m01 + m10;
-  rate[4] = m02 + m20;
-  rate[5] = m12 + m21;
-}
-
-// Hooke's law in rate form, added to `rate`: 2G (epsdot - epsdot^gg/3 delta) + K epsdot^gg delta
-inline void add_elastic_rate(double bulk, double shear, const double strain_rate[6], double rate[6])
-{
-  const double volumetric_rate = strain_rate[0] + strain_rate[1] + strain_rate[2];
-  const double normal_shift = (bulk - 2.0 * shear / 3.0) * volumetric_rate;
-  for (int k = 0; k < 3; k++) rate[k] += 2.0 * shear * strain_rate[k] + normal_shift;
-  for (int k = 3; k < 6; k++) rate[k] += 2.0 * shear * strain_rate[k];
-}
 
 /* ----------------------------------------------------------------------
    interface seen by the integrator
@@ -196,27 +104,6 @@ struct FrictionalParameters {
                          FrictionalParameters &parameters, std::vector<std::string> &options,
                          std::string &error);
 };
-
-// the decimal form of a number for messages: 19.8, not 19.800000
-std::string format_number(double value);
-// a whole word as a finite number (the words of material lines); false if it is not one
-bool parse_finite_number(const std::string &word, double &value);
-
-// the in-plane principal stresses of a plane-strain stress (xz = yz = 0) as Mohr's circle:
-// its centre (sxx + syy)/2 and radius sqrt(((sxx - syy)/2)^2 + sxy^2)
-inline void mohr_circle(const double stress[6], double &center, double &radius)
-{
-  const double half_difference = 0.5 * (stress[0] - stress[1]);
-  center = 0.5 * (stress[0] + stress[1]);
-  radius = std::sqrt(half_difference * half_difference + stress[3] * stress[3]);
-}
-
-// eigenvalues (descending) and unit eigenvectors (vectors[k] belongs to values[k]) of a
-// symmetric tensor in Voigt order; with xz = yz = 0 (plane strain) in closed form, z an
-// eigenvector exactly; else by Jacobi rotations
-void principal_stresses(const double stress[6], double values[3], double vectors[3][3]);
-
-constexpr double DEG2RAD = 3.14159265358979323846 / 180.0;
 
 }    // namespace SPHSoil
 

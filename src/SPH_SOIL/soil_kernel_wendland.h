@@ -8,7 +8,7 @@
    spline at many neighbours (Dehnen & Aly 2012), which matters where
    refined particles see a coarse cutoff. (1/r) dW/dr = -5 C/h^(D+2) (1 - q/2)^3
    needs no division by r; W'' < 0 for q < 1/2.
-   The interface is that of CubicSpline (soil_kernel.h).
+   The interface is that of CubicSpline (soil_kernel_cubic.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SOIL_KERNEL_WENDLAND_H

@@ -67,6 +67,7 @@ bool SPHSoil::material_from_words(const std::string &name, const std::vector<std
 {
   material = SoilMaterial();
   material.name = name;
+  material.words = words;
   if (words.empty()) {
     error = "material " + name + ": expected 'soil rho0 model parameters' (models: " +
         model_keywords() + ") or 'wall'";

@@ -38,6 +38,9 @@ struct SoilMaterial {
   WallSlip slip = WallSlip::pair_default;             // walls only
   double friction = 0.0;                              // Coulomb coefficient, WallSlip::friction
   WallBoundary boundary = WallBoundary::mirror;       // walls only
+  // the words that defined it (after its name): material_from_words(name, words) builds it
+  // again, e.g. from a restart file
+  std::vector<std::string> words;
 
   bool is_wall() const { return !model; }
   // elastic P-wave speed sqrt((K + 4G/3)/rho_0) of a soil: bounds the time step, scales the

@@ -9,13 +9,26 @@
 
 using namespace SPHSoil;
 
-const std::vector<ModelEntry> &SPHSoil::constitutive_models()
+namespace {
+// the registry: one line per model
+std::vector<ModelEntry> &registry()
 {
-  static const std::vector<ModelEntry> models = {
+  static std::vector<ModelEntry> models = {
       {DruckerPrager::KEYWORD, DruckerPrager::USAGE, &DruckerPrager::create},
       {MohrCoulomb::KEYWORD, MohrCoulomb::USAGE, &MohrCoulomb::create},
   };
   return models;
+}
+}    // namespace
+
+const std::vector<ModelEntry> &SPHSoil::constitutive_models()
+{
+  return registry();
+}
+
+void SPHSoil::register_model(const ModelEntry &entry)
+{
+  registry().push_back(entry);
 }
 
 const ModelEntry *SPHSoil::find_model(const std::string &keyword)
@@ -29,6 +42,14 @@ std::string SPHSoil::model_keywords()
 {
   std::string list;
   for (const auto &entry : constitutive_models()) list += (list.empty() ? "" : ", ") + std::string(entry.keyword);
+  return list;
+}
+
+std::string SPHSoil::model_usages()
+{
+  std::string list;
+  for (const auto &entry : constitutive_models())
+    list += (list.empty() ? "" : "; ") + std::string(entry.keyword) + " " + entry.usage;
   return list;
 }
 

@@ -19,19 +19,24 @@ namespace SPHSoil {
 
 struct ModelEntry {
   const char *keyword;    // drucker_prager
-  const char *usage;      // its words, for messages: "K nu phi psi c [fit ...]"
+  const char *usage;      // its words, for messages (model_usages()): "K nu phi psi c [fit ...]"
   std::unique_ptr<ConstitutiveModel> (*create)(const std::vector<std::string> &words,
                                                std::string &error);
 };
 
-// every model, in the order of the documentation
+// every model, in the order of the documentation (the registry: soil_models.cpp)
 const std::vector<ModelEntry> &constitutive_models();
+// add a model to the registry (for a model outside the package, and the tests' dummy model)
+void register_model(const ModelEntry &entry);
 
 // the entry of `keyword`, nullptr if there is none
 const ModelEntry *find_model(const std::string &keyword);
 
 // the keywords, comma-separated, for messages
 std::string model_keywords();
+// each keyword with its words ("drucker_prager K nu phi psi c ...; mohr_coulomb ..."), for
+// messages that show how a model is written
+std::string model_usages();
 
 // the model of `keyword` built from `words` (the parameters after the keyword), or nullptr
 // with the reason (naming the model, the parameter and its range) in `error`

@@ -127,10 +127,9 @@ bool MohrCoulomb::return_to_admissible(double stress[6]) const
   principal_stresses(stress, values, vectors);
   if (return_principal(values) == Return::none) return false;
   for (int k = 0; k < 6; k++) stress[k] = 0.0;
-  static const int voigt[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
   for (int k = 0; k < 3; k++)
     for (int m = 0; m < 6; m++)
-      stress[m] += values[k] * vectors[k][voigt[m][0]] * vectors[k][voigt[m][1]];
+      stress[m] += values[k] * vectors[k][VOIGT_ROW[m]] * vectors[k][VOIGT_COL[m]];
   return true;
 }
 

@@ -38,17 +38,17 @@ struct KernelGradientError {
 KernelGradientError kernel_gradient_error(int dimension, double separation, double smoothing_ratio,
                                           double r_a, NeighbourSmoothing neighbours,
                                           double relative_tolerance = 1.0e-5, int max_cells = 256,
-                                          KernelKind kernel = KernelKind::cubic);
+                                          KernelKind kernel = KernelKind());
 
 // E on a fixed grid of cells per dimension (for convergence studies).
 double kernel_gradient_error_fixed(int dimension, double separation, double smoothing_ratio,
                                    double r_a, NeighbourSmoothing neighbours, int cells,
-                                   KernelKind kernel = KernelKind::cubic);
+                                   KernelKind kernel = KernelKind());
 
 // sum_a of the squared difference of the gradients at one point x (length `dimension`)
 double gradient_difference_squared(int dimension, double separation, double smoothing_ratio,
                                    double r_a, NeighbourSmoothing neighbours, const double *x,
-                                   KernelKind kernel = KernelKind::cubic);
+                                   KernelKind kernel = KernelKind());
 
 // Swegle's criterion (W'' < 0 for r < q* h, q* the kernel's INFLECTION: 2/3 for the cubic
 // spline, the paper's case, 1/2 for Wendland C2) applied to a split, for a refined particle i

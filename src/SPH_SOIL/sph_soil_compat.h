@@ -50,7 +50,7 @@ namespace LAMMPS_NS {
 
 class Pair;
 
-namespace SphSoilCompat {
+namespace SPHSoilCompat {
 
 struct Fallback {};
 struct Preferred : Fallback {};
@@ -183,7 +183,7 @@ template <typename... Args>
   throw;
 }
 
-}    // namespace SphSoilCompat
+}    // namespace SPHSoilCompat
 }    // namespace LAMMPS_NS
 
 #endif

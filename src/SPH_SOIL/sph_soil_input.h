@@ -20,7 +20,7 @@
 #include <string>
 
 namespace LAMMPS_NS {
-namespace SphSoilInput {
+namespace SPHSoilInput {
 
 // An allowed range of a number: a bound on either side (or none), open or closed.
 struct Range {
@@ -94,7 +94,7 @@ inline int integer(const char *file, int line, LAMMPS *lmp, const std::string &w
   return value;
 }
 
-}    // namespace SphSoilInput
+}    // namespace SPHSoilInput
 }    // namespace LAMMPS_NS
 
 #endif

@@ -20,7 +20,7 @@
 #include <mpi.h>
 
 namespace LAMMPS_NS {
-namespace SphSoilOffenders {
+namespace SPHSoilOffenders {
 
 constexpr int MAX_VALUES = 6;
 
@@ -69,7 +69,7 @@ Offenders find_offenders(LAMMPS *lmp, Fails fails, Values values)
   return reduce_offenders(lmp, count, first_local, values);
 }
 
-}    // namespace SphSoilOffenders
+}    // namespace SPHSoilOffenders
 }    // namespace LAMMPS_NS
 
 #endif

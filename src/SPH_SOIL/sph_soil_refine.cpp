@@ -14,7 +14,7 @@
 #include "pair_sph_soil.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_refine_criterion.h"
-#include "sph_soil_splitter.h"
+#include "sph_soil_refine_splitter.h"
 #include "utils.h"
 
 #include <string>
@@ -37,7 +37,7 @@ void SPHSoilRefine::command(int narg, char **arg)
   if (igroup == -1) error->all(FLERR, "Could not find sph_soil/refine group ID {}", arg[0]);
   const int groupbit = group->bitmask[igroup];
 
-  SPHSoilSplitter splitter(lmp, STYLE);
+  SPHSoilRefineSplitter splitter(lmp, STYLE);
   SPHSoilRefineSelection selection(lmp, STYLE, "all");
   for (int iarg = 1; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
@@ -45,7 +45,7 @@ void SPHSoilRefine::command(int narg, char **arg)
     const char *value = arg[iarg + 1];
     if (!selection.parse_keyword(keyword, value) && !splitter.parse_keyword(STYLE, keyword, value))
       error->all(FLERR, "Illegal sph_soil/refine keyword {} (allowed: {}, {})", keyword,
-                 SPHSoilRefineSelection::KEYWORDS, SPHSoilSplitter::KEYWORDS);
+                 SPHSoilRefineSelection::KEYWORDS, SPHSoilRefineSplitter::KEYWORDS);
   }
   if (force->pair == nullptr || !force->pair_match("sph/soil", 1))
     error->all(FLERR, "sph_soil/refine command requires pair_style sph/soil");

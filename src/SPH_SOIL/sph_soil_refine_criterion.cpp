@@ -11,9 +11,9 @@
 #include "error.h"
 #include "region.h"
 #include "sph_soil_compat.h"
-#include "sph_soil_criterion_all.h"
-#include "sph_soil_criterion_strain.h"
-#include "sph_soil_criterion_variable.h"
+#include "sph_soil_refine_criterion_all.h"
+#include "sph_soil_refine_criterion_strain.h"
+#include "sph_soil_refine_criterion_variable.h"
 #include "utils.h"
 
 using namespace LAMMPS_NS;
@@ -29,13 +29,13 @@ struct Criterion {
 };
 const Criterion CRITERIA[] = {
     {"strain", "threshold", [](LAMMPS *lmp, const std::string &) -> SPHSoilRefineCriterion * {
-       return new SPHSoilCriterionStrain(lmp);
+       return new SPHSoilRefineCriterionStrain(lmp);
      }},
     {"all", "", [](LAMMPS *lmp, const std::string &) -> SPHSoilRefineCriterion * {
-       return new SPHSoilCriterionAll(lmp);
+       return new SPHSoilRefineCriterionAll(lmp);
      }},
     {"v_", "", [](LAMMPS *lmp, const std::string &word) -> SPHSoilRefineCriterion * {
-       return new SPHSoilCriterionVariable(lmp, word.substr(2));
+       return new SPHSoilRefineCriterionVariable(lmp, word.substr(2));
      }},
 };
 
@@ -82,7 +82,7 @@ bool SPHSoilRefineSelection::parse_keyword(const std::string &keyword, const cha
     criterion_word = value;
   } else if (keyword == "region") {
     region_id = value;
-    if (!SphSoilCompat::find_region(domain, region_id))
+    if (!SPHSoilCompat::find_region(domain, region_id))
       error->all(FLERR, "{} region {} does not exist", command, region_id);
   } else if (criterion->parse_keyword(command, keyword, value)) {
     criterion_keyword = keyword;
@@ -102,7 +102,7 @@ void SPHSoilRefineSelection::init()
 {
   region = nullptr;
   if (!region_id.empty()) {
-    region = SphSoilCompat::find_region(domain, region_id);
+    region = SPHSoilCompat::find_region(domain, region_id);
     if (!region) error->all(FLERR, "{} region {} does not exist", command, region_id);
   }
   criterion->init(command);

@@ -11,7 +11,7 @@
 #include "error.h"
 #include "group.h"
 #include "input.h"
-#include "soil_split.h"
+#include "soil_refine_split.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
 #include "utils.h"
@@ -63,7 +63,7 @@ void SPHSoilSet::command(int narg, char **arg)
       iarg += 2;
     } else if (keyword == "level") {
       need(1);
-      const int value = SphSoilInput::integer(FLERR, lmp, "sph_soil/set level", arg[iarg + 1], 0,
+      const int value = SPHSoilInput::integer(FLERR, lmp, "sph_soil/set level", arg[iarg + 1], 0,
                                               SPHSoil::MAX_LEVEL);
       for (int i = 0; i < nlocal; i++)
         if (mask[i] & groupbit) avec->level[i] = value;
@@ -77,7 +77,7 @@ void SPHSoilSet::command(int narg, char **arg)
         // plane strain: no xz, yz shear (the pair sums never produce the rates that would
         // change them, so a value set here would stay, unbalanced)
         if (domain->dimension == 2 && k >= 4) {
-          const auto shear = SphSoilOffenders::find_offenders(
+          const auto shear = SPHSoilOffenders::find_offenders(
               lmp, [&](int i) { return (mask[i] & groupbit) && values[i] != 0.0; },
               [&](int i, double *out) { out[0] = values[i]; });
           if (shear)
@@ -93,7 +93,7 @@ void SPHSoilSet::command(int narg, char **arg)
       // sigma_v = rho0 g (v - v_surface) below the surface (0 above), sigma_h = K0 sigma_v;
       // v is y in 2D and z in 3D
       need(4);
-      using namespace SphSoilInput;
+      using namespace SPHSoilInput;
       const double surface = number(FLERR, lmp, "sph_soil/set geostatic surface", arg[iarg + 1]);
       const double density = number(FLERR, lmp, "sph_soil/set geostatic density", arg[iarg + 2], above(0.0));
       const double gravity = number(FLERR, lmp, "sph_soil/set geostatic gravity", arg[iarg + 3], at_least(0.0));
@@ -113,8 +113,8 @@ void SPHSoilSet::command(int narg, char **arg)
       need(6);
       double point[3], normal[3];
       for (int k = 0; k < 3; k++) {
-        point[k] = SphSoilInput::number(FLERR, lmp, "sph_soil/set wall point", arg[iarg + 1 + k]);
-        normal[k] = SphSoilInput::number(FLERR, lmp, "sph_soil/set wall normal", arg[iarg + 4 + k]);
+        point[k] = SPHSoilInput::number(FLERR, lmp, "sph_soil/set wall point", arg[iarg + 1 + k]);
+        normal[k] = SPHSoilInput::number(FLERR, lmp, "sph_soil/set wall normal", arg[iarg + 4 + k]);
       }
       const double norm = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
       if (!(norm > 0.0))
@@ -169,7 +169,7 @@ SPHSoilSet::Value SPHSoilSet::parse_value(const std::string &keyword, const char
       error->all(FLERR, "Variable {} for sph_soil/set {} must be equal-style or atom-style",
                  value.variable, keyword);
   } else {
-    value.constant = SphSoilInput::number(FLERR, lmp, "sph_soil/set " + keyword, arg);
+    value.constant = SPHSoilInput::number(FLERR, lmp, "sph_soil/set " + keyword, arg);
   }
   return value;
 }
@@ -198,7 +198,7 @@ void SPHSoilSet::check_range(const std::string &keyword, const std::vector<doubl
                              double lo, bool lo_open, const char *allowed, int groupbit)
 {
   const int *mask = atom->mask;
-  const auto bad = SphSoilOffenders::find_offenders(
+  const auto bad = SPHSoilOffenders::find_offenders(
       lmp,
       [&](int i) {
         const double v = values[i];

@@ -30,7 +30,7 @@
     EXPECT_THAT(sph_soil_message, ::testing::MatchesRegex(regex));                        \
   } while (0)
 
-namespace SphSoilTesting {
+namespace SPHSoilTesting {
 
 // The commands that make a periodic 2D patch of soil, 20 x 16 particles at 1 cm on a disordered
 // lattice, with stresses that vary in space and no velocity (the caller sets it). Atom IDs
@@ -145,6 +145,6 @@ inline std::map<LAMMPS_NS::tagint, std::vector<double>> gather_state(LAMMPS_NS::
   return state;
 }
 
-}    // namespace SphSoilTesting
+}    // namespace SPHSoilTesting
 
 #endif

@@ -2,15 +2,15 @@
    SPH_SOIL package for LAMMPS: particle splitting shared by
    fix sph/soil/refine (dynamic) and the sph_soil/refine command (static).
 
-   Replaces owned particles by their daughters (soil_split.h): mass, h,
+   Replaces owned particles by their daughters (soil_refine_split.h): mass, h,
    level and position as specified, velocity copied, density, stress and
    total strain interpolated by CSPM at the daughter's position over the
    atoms of the parent's type, every other per-atom value (including other fixes' per-atom
    arrays, via AtomVec::copy) inherited from the parent.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_SPH_SOIL_SPLITTER_H
-#define LMP_SPH_SOIL_SPLITTER_H
+#ifndef LMP_SPH_SOIL_REFINE_SPLITTER_H
+#define LMP_SPH_SOIL_REFINE_SPLITTER_H
 
 #include "pointers.h"
 #include "soil_kernels.h"
@@ -21,10 +21,10 @@
 
 namespace LAMMPS_NS {
 
-class SPHSoilSplitter : protected Pointers {
+class SPHSoilRefineSplitter : protected Pointers {
  public:
   // `who` names the command or fix in error messages
-  SPHSoilSplitter(class LAMMPS *, const std::string &who);
+  SPHSoilRefineSplitter(class LAMMPS *, const std::string &who);
 
   double separation = 0.5;         // eps_r: side of the daughters' square / d_p
   double smoothing_ratio = 0.5;    // alpha_r: h_d / h_p

@@ -4,20 +4,20 @@
    exceeds `threshold` (doc/theory.rst section 5.1).
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_SPH_SOIL_CRITERION_STRAIN_H
-#define LMP_SPH_SOIL_CRITERION_STRAIN_H
+#ifndef LMP_SPH_SOIL_REFINE_CRITERION_STRAIN_H
+#define LMP_SPH_SOIL_REFINE_CRITERION_STRAIN_H
 
 #include "atom.h"
 #include "atom_vec_sph_soil.h"
-#include "soil_constitutive.h"
+#include "soil_tensor.h"
 #include "sph_soil_input.h"
 #include "sph_soil_refine_criterion.h"
 
 namespace LAMMPS_NS {
 
-class SPHSoilCriterionStrain : public SPHSoilRefineCriterion {
+class SPHSoilRefineCriterionStrain : public SPHSoilRefineCriterion {
  public:
-  explicit SPHSoilCriterionStrain(LAMMPS *lmp) :
+  explicit SPHSoilRefineCriterionStrain(LAMMPS *lmp) :
       SPHSoilRefineCriterion(lmp), threshold(0.05), avec(nullptr)
   {
   }
@@ -25,7 +25,7 @@ class SPHSoilCriterionStrain : public SPHSoilRefineCriterion {
   bool parse_keyword(const std::string &command, const std::string &keyword, const char *value) override
   {
     if (keyword != "threshold") return false;
-    threshold = SphSoilInput::number(FLERR, lmp, command + " threshold", value, SphSoilInput::at_least(0.0));
+    threshold = SPHSoilInput::number(FLERR, lmp, command + " threshold", value, SPHSoilInput::at_least(0.0));
     return true;
   }
   void prepare() override { avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil")); }

@@ -2,7 +2,7 @@
    SPH_SOIL package for LAMMPS: particle splitting (see the header)
 ------------------------------------------------------------------------- */
 
-#include "sph_soil_splitter.h"
+#include "sph_soil_refine_splitter.h"
 
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
@@ -17,7 +17,7 @@
 #include "soil_constitutive.h"
 #include "soil_material.h"
 #include "soil_neighbours.h"
-#include "soil_split.h"
+#include "soil_refine_split.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,27 +32,27 @@ constexpr int NSTATE = 13;
 
 /* ---------------------------------------------------------------------- */
 
-SPHSoilSplitter::SPHSoilSplitter(LAMMPS *lmp, const std::string &who_) :
+SPHSoilRefineSplitter::SPHSoilRefineSplitter(LAMMPS *lmp, const std::string &who_) :
     Pointers(lmp), who(who_), avec(nullptr), pair(nullptr)
 {
 }
 
 // (a definition for C++11, where LAMMPS 29Sep2021 compiles: the value is passed by reference)
-constexpr const char *SPHSoilSplitter::KEYWORDS;
+constexpr const char *SPHSoilRefineSplitter::KEYWORDS;
 
 /* ---------------------------------------------------------------------- */
 
-SPHSoil::KernelKind SPHSoilSplitter::kernel_kind() const
+SPHSoil::KernelKind SPHSoilRefineSplitter::kernel_kind() const
 {
   return pair->kernel_kind();
 }
 
 /* ---------------------------------------------------------------------- */
 
-bool SPHSoilSplitter::parse_keyword(const std::string &command, const std::string &keyword,
+bool SPHSoilRefineSplitter::parse_keyword(const std::string &command, const std::string &keyword,
                                     const char *value)
 {
-  using namespace SphSoilInput;
+  using namespace SPHSoilInput;
   const std::string what = command + " " + keyword;
   if (keyword == "separation")
     separation = number(FLERR, lmp, what, value, between(0.0, 1.0, true, true));
@@ -67,7 +67,7 @@ bool SPHSoilSplitter::parse_keyword(const std::string &command, const std::strin
 
 /* ---------------------------------------------------------------------- */
 
-void SPHSoilSplitter::init()
+void SPHSoilRefineSplitter::init()
 {
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   if (!avec) error->all(FLERR, "{} requires atom_style sph/soil", who);
@@ -77,12 +77,12 @@ void SPHSoilSplitter::init()
 
 /* ---------------------------------------------------------------------- */
 
-double SPHSoilSplitter::smoothing_length(int i) const
+double SPHSoilRefineSplitter::smoothing_length(int i) const
 {
   return avec->smoothing_length[i];
 }
 
-double SPHSoilSplitter::spacing(int i) const
+double SPHSoilRefineSplitter::spacing(int i) const
 {
   if (reference_spacing > 0.0) return level_spacing(reference_spacing, avec->level[i]);
   const double density = pair->material(atom->type[i]).density;
@@ -95,7 +95,7 @@ double SPHSoilSplitter::spacing(int i) const
    at the largest smoothing length, `reach`, of the position; `near` has them binned
 ------------------------------------------------------------------------- */
 
-void SPHSoilSplitter::interpolate(int parent, const double *position, const CellGrid &near,
+void SPHSoilRefineSplitter::interpolate(int parent, const double *position, const CellGrid &near,
                                   double reach, double *state) const
 {
   const int dimension = domain->dimension;
@@ -133,7 +133,7 @@ void SPHSoilSplitter::interpolate(int parent, const double *position, const Cell
    parents' IDs, so that the result does not depend on how atoms are spread over ranks
 ------------------------------------------------------------------------- */
 
-std::vector<tagint> SPHSoilSplitter::first_new_tags(const std::vector<int> &parents, bigint &total)
+std::vector<tagint> SPHSoilRefineSplitter::first_new_tags(const std::vector<int> &parents, bigint &total)
 {
   const int nprocs = comm->nprocs;
   const int mine = (int) parents.size();
@@ -171,7 +171,7 @@ std::vector<tagint> SPHSoilSplitter::first_new_tags(const std::vector<int> &pare
 
 /* ---------------------------------------------------------------------- */
 
-bigint SPHSoilSplitter::split(const std::vector<int> &parents)
+bigint SPHSoilRefineSplitter::split(const std::vector<int> &parents)
 {
   if (!atom->tag_enable) error->all(FLERR, "{} requires atom IDs", who);
   bigint total = 0;
@@ -218,7 +218,7 @@ bigint SPHSoilSplitter::split(const std::vector<int> &parents)
             (domain->boundary[a][1] == 1 && xd[a] >= domain->boxhi[a]))
           outside[parents[n]] = n * count + k;
     }
-  const auto lost = SphSoilOffenders::find_offenders(
+  const auto lost = SPHSoilOffenders::find_offenders(
       lmp, [&](int i) { return outside[i] >= 0; },
       [&](int i, double *values) {
         for (int a = 0; a < 3; a++) values[a] = position[(size_t) outside[i] * 3 + a];

@@ -8,8 +8,8 @@
    with C = 10/(7 pi) in 2D and 1/pi in 3D; support radius 2h.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_SOIL_KERNEL_H
-#define LMP_SOIL_KERNEL_H
+#ifndef LMP_SOIL_KERNEL_CUBIC_H
+#define LMP_SOIL_KERNEL_CUBIC_H
 
 #include <cmath>
 

@@ -11,8 +11,8 @@
    V_j = m_j / rho_j, which reproduces a constant field exactly.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_SOIL_SPLIT_H
-#define LMP_SOIL_SPLIT_H
+#ifndef LMP_SOIL_REFINE_SPLIT_H
+#define LMP_SOIL_REFINE_SPLIT_H
 
 #include "soil_kernels.h"
 
@@ -60,7 +60,7 @@ inline double level_spacing(double reference_spacing, int level)
 // Running CSPM sums for one point with the kernel of `kernel`: add neighbours one by one, then
 // divide.
 template <int NVALUES> struct CspmSum {
-  explicit CspmSum(KernelKind kernel = KernelKind::cubic) : kernel(kernel) {}
+  explicit CspmSum(KernelKind kernel = KernelKind()) : kernel(kernel) {}
   KernelKind kernel;
   double weight = 0.0;
   double values[NVALUES] = {};

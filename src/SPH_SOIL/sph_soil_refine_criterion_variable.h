@@ -4,8 +4,8 @@
    criterion of their own (from per-atom properties, computes, positions).
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_SPH_SOIL_CRITERION_VARIABLE_H
-#define LMP_SPH_SOIL_CRITERION_VARIABLE_H
+#ifndef LMP_SPH_SOIL_REFINE_CRITERION_VARIABLE_H
+#define LMP_SPH_SOIL_REFINE_CRITERION_VARIABLE_H
 
 #include "atom.h"
 #include "error.h"
@@ -15,9 +15,9 @@
 
 namespace LAMMPS_NS {
 
-class SPHSoilCriterionVariable : public SPHSoilRefineCriterion {
+class SPHSoilRefineCriterionVariable : public SPHSoilRefineCriterion {
  public:
-  SPHSoilCriterionVariable(LAMMPS *lmp, const std::string &name) :
+  SPHSoilRefineCriterionVariable(LAMMPS *lmp, const std::string &name) :
       SPHSoilRefineCriterion(lmp), name(name), ivar(-1)
   {
   }

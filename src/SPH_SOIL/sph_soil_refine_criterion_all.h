@@ -3,16 +3,16 @@
    every particle of the group (and region) splits.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_SPH_SOIL_CRITERION_ALL_H
-#define LMP_SPH_SOIL_CRITERION_ALL_H
+#ifndef LMP_SPH_SOIL_REFINE_CRITERION_ALL_H
+#define LMP_SPH_SOIL_REFINE_CRITERION_ALL_H
 
 #include "sph_soil_refine_criterion.h"
 
 namespace LAMMPS_NS {
 
-class SPHSoilCriterionAll : public SPHSoilRefineCriterion {
+class SPHSoilRefineCriterionAll : public SPHSoilRefineCriterion {
  public:
-  explicit SPHSoilCriterionAll(LAMMPS *lmp) : SPHSoilRefineCriterion(lmp) {}
+  explicit SPHSoilRefineCriterionAll(LAMMPS *lmp) : SPHSoilRefineCriterion(lmp) {}
   bool wants(int) const override { return true; }
   std::string describe() const override { return "all"; }
 };

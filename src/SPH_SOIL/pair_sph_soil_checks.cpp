@@ -1,0 +1,145 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package for LAMMPS: pair_style sph/soil: the set-up checks of the particles
+------------------------------------------------------------------------- */
+
+#include "pair_sph_soil.h"
+
+#include "atom.h"
+#include "atom_vec_sph_soil.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "soil_refine_split.h"
+#include "sph_soil_fixes.h"
+#include "sph_soil_offenders.h"
+#include "sph_soil_walls.h"
+
+#include <cmath>
+
+using namespace LAMMPS_NS;
+using SPHSoilOffenders::find_offenders;
+
+/* ----------------------------------------------------------------------
+   the particles' state against their materials: wall particles need what their kind needs (an
+   error otherwise, sph_soil_walls.h); a density far from the material's, an h far from the
+   spacing that mass and density give, or soil in a rigid body are legal but most likely set-up
+   mistakes (a warning, once)
+------------------------------------------------------------------------- */
+
+void PairSPHSoil::check_particles()
+{
+  walls->check_particles();
+  warn_density();
+  warn_spacing();
+  warn_soil_in_rigid_bodies();
+}
+
+// Density within 10% of rho0: compression under soil's own weight changes it by p/K, well below 1%.
+void PairSPHSoil::warn_density()
+{
+  if (warned_density) return;
+  warned_density = true;
+  const int *type = atom->type;
+  const double *rho = atom->rho;
+  const auto off = find_offenders(
+      lmp,
+      [&](int i) {
+        return materials.has(type[i]) && !walls->is_wall(type[i]) &&
+            std::fabs(rho[i] / materials.of(type[i]).density - 1.0) > 0.1;
+      },
+      [&](int i, double *values) {
+        values[0] = rho[i];
+        values[1] = materials.of(type[i]).density;
+      });
+  if (off && comm->me == 0)
+    error->warning(FLERR, "Pair sph/soil: {} soil particle(s) have a density more than 10% away "
+                          "from their material's rho0 (atom {}: {} against {}); is "
+                          "'sph_soil/set <group> density' missing?", off.count, off.first,
+                   off.values[0], off.values[1]);
+}
+
+// h/d within [0.9, 3], d = (m/rho)^(1/D) the spacing that mass and density give: below, a
+// particle has too few neighbours for SPH (none below 0.5), above, the kernel smears over many
+// spacings; runs use 1.2 to 2.
+void PairSPHSoil::warn_spacing()
+{
+  if (warned_spacing) return;
+  warned_spacing = true;
+  const int *type = atom->type;
+  const double *h = avec->smoothing_length, *rho = atom->rho, *rmass = atom->rmass;
+  const int dimension = domain->dimension;
+  auto ratio = [&](int i) { return h[i] / SPHSoil::volume_spacing(rmass[i] / rho[i], dimension); };
+  const auto off = find_offenders(
+      lmp,
+      [&](int i) {
+        if (!materials.has(type[i])) return false;
+        const double r = ratio(i);
+        return !(r >= 0.9 && r <= 3.0);
+      },
+      [&](int i, double *values) {
+        values[0] = ratio(i);
+        values[1] = h[i];
+        values[2] = rmass[i];
+        values[3] = rho[i];
+      });
+  if (off && comm->me == 0)
+    error->warning(FLERR, "Pair sph/soil: {} particle(s) have h/d outside [0.9, 3], with d = "
+                          "(m/rho)^(1/{}) the spacing that their mass and density give (atom {}: "
+                          "h/d = {:.3g} from h {}, m {}, rho {}); usual is 1.2 to 2: check "
+                          "'sph_soil/set ... mass ... density ... h'", off.count, dimension,
+                   off.first, off.values[0], off.values[1], off.values[2], off.values[3]);
+}
+
+// A rigid body of soil particles (fix rigid and its variants) moves them as a block, while fix
+// sph/soil integrates them too or their stress never changes: structures are wall particles.
+void PairSPHSoil::warn_soil_in_rigid_bodies()
+{
+  const int *type = atom->type;
+  Fix *rigid = SPHSoilFixes::first_fix_holding(
+      lmp, [](Fix *fix) { return fix->rigid_flag != 0; },
+      [&](int i) { return materials.model(type[i]) != nullptr; });
+  if (rigid && comm->me == 0)
+    error->warning(FLERR, "Fix {} ({}) moves soil particles as a rigid body: a structure is made "
+                          "of wall particles (pair_coeff I I wall), soil particles are integrated "
+                          "by fix sph/soil", rigid->id, rigid->style);
+}
+
+/* ----------------------------------------------------------------------
+   particles at the same place (created twice, or read twice): legal, the sums stay finite
+   (the kernel gradient vanishes at r = 0), but most likely a mistake; warned once, at the
+   first force evaluation, when the neighbour list exists
+------------------------------------------------------------------------- */
+
+void PairSPHSoil::warn_coinciding()
+{
+  warned_coinciding = true;
+  double **x = atom->x;
+  const double *h = avec->smoothing_length;
+  const tagint *tag = atom->tag;
+  bigint pairs = 0;
+  int first = -1, partner = -1;
+  const int *partners = neighbours.partner_data();
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double tolerance = 1.0e-6 * h[i];
+    for (int jj = neighbours.first(i); jj < neighbours.end(i); jj++) {
+      const int j = partners[jj];
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      if (dx * dx + dy * dy + dz * dz >= tolerance * tolerance) continue;
+      pairs++;
+      if (first < 0 || tag[i] < tag[first]) {
+        first = i;
+        partner = j;
+      }
+    }
+  }
+  const auto at_same_place = SPHSoilOffenders::reduce_offenders(
+      lmp, pairs, first, [&](int i, double *values) {
+        values[0] = tag[partner];
+        for (int a = 0; a < 3; a++) values[1 + a] = x[i][a];
+      });
+  if (at_same_place && comm->me == 0)
+    error->warning(FLERR, "Pair sph/soil: {} pair(s) of particles closer than 1e-6 h (atoms {} and "
+                          "{} at {} {} {}): particles at the same place, created or read twice?",
+                   at_same_place.count, at_same_place.first, (tagint) at_same_place.values[0],
+                   at_same_place.values[1], at_same_place.values[2], at_same_place.values[3]);
+}

@@ -1,0 +1,379 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package for LAMMPS: pair_style sph/soil: the packed rows, the loop, the virial
+------------------------------------------------------------------------- */
+
+#include "pair_sph_soil.h"
+
+#include "atom.h"
+#include "atom_vec_sph_soil.h"
+#include "domain.h"
+#include "force.h"
+#include "memory.h"
+#include "neighbor.h"
+#include "soil_artificial_stress.h"
+#include "soil_packed_rows.h"
+#include "soil_pair_terms.h"
+#include "soil_refine_split.h"
+#include "soil_wall_images.h"
+#include "sph_soil_walls.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using SPHSoil::P_H;
+using SPHSoil::P_MASS;
+using SPHSoil::P_RHO;
+using SPHSoil::P_STRESS;
+using SPHSoil::P_V;
+using SPHSoil::P_VOLUME;
+using SPHSoil::P_X;
+
+// kept out of line (GCC and Clang would inline it into the pair loop)
+#if defined(__GNUC__)
+#define SPH_SOIL_NOINLINE __attribute__((noinline))
+#else
+#define SPH_SOIL_NOINLINE
+#endif
+
+/* ----------------------------------------------------------------------
+   LAMMPS has just reneighboured (set-up, or the skin was used up, or atoms were added): owned
+   and ghost atoms are new, and so is our list. The virial: pair by pair when LAMMPS asks for it
+   that way or per atom (compute stress/atom), else x . f over owned and ghost atoms
+------------------------------------------------------------------------- */
+
+void PairSPHSoil::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  if (neighbor->ago == 0) build_neighbours();
+  if (!warned_coinciding) warn_coinciding();
+  SPHSoil::with_kernel(kernel, Evaluate{this, domain->dimension, has_artificial_stress, vflag_either != 0});
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+template <class Kernel> void PairSPHSoil::Evaluate::operator()() const
+{
+  // (a table of member-function pointers: one branch instead of a tree of them)
+  using Eval = void (PairSPHSoil::*)();
+  static const Eval table[2][2][2] = {
+      {{&PairSPHSoil::eval<2, Kernel, false, false>, &PairSPHSoil::eval<2, Kernel, false, true>},
+       {&PairSPHSoil::eval<2, Kernel, true, false>, &PairSPHSoil::eval<2, Kernel, true, true>}},
+      {{&PairSPHSoil::eval<3, Kernel, false, false>, &PairSPHSoil::eval<3, Kernel, false, true>},
+       {&PairSPHSoil::eval<3, Kernel, true, false>, &PairSPHSoil::eval<3, Kernel, true, true>}}};
+  (pair->*table[dimension == 3][artificial_stress][virial])();
+}
+
+/* ----------------------------------------------------------------------
+   per-atom inputs of the pair sums, once per step for owned and ghost atoms,
+   packed into one row of PACKED doubles per atom (see the header): a
+   neighbour then costs two cache lines instead of a load from each of
+   eight arrays; and the accumulators of the sums, set to zero
+------------------------------------------------------------------------- */
+
+template <int DIMENSION> void PairSPHSoil::pack_atoms()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (nall > nmax_packed) {
+    nmax_packed = atom->nmax;
+    memory->destroy(packed);
+    memory->destroy(sums);
+    memory->create(packed, nmax_packed * SPHSoil::PACKED, "pair:packed");
+    memory->create(sums, nmax_packed * SUMS, "pair:sums");
+  }
+  double **x = atom->x, **vest = atom->vest, **stress = avec->stress;
+  const double *rho = atom->rho, *rmass = atom->rmass, *h = avec->smoothing_length;
+  for (int i = 0; i < nall; i++) {
+    double *row = packed + (size_t) i * SPHSoil::PACKED;
+    const double inv_rho = 1.0 / rho[i];
+    const double inv_rho2 = inv_rho * inv_rho;
+    // soil: fix sph/soil's estimate of v(t + dt); a wall: its velocity (the walls' fix
+    // SPH_SOIL_WALLS copies it there after the fixes that move walls have run)
+    for (int a = 0; a < 3; a++) {
+      row[P_X + a] = x[i][a];
+      row[P_V + a] = vest[i][a];
+    }
+    for (int k = 0; k < 6; k++) row[P_STRESS + k] = stress[i][k] * inv_rho2;
+    row[P_VOLUME] = rmass[i] * inv_rho;
+    row[P_MASS] = rmass[i];
+    row[P_RHO] = rho[i];
+    row[P_H] = h[i];
+  }
+  if (nall > 0) memset(sums, 0, sizeof(double) * SUM_ROW<DIMENSION>() * nall);
+}
+
+/* ----------------------------------------------------------------------
+   the artificial stress R of every owned and ghost atom (soil_artificial_stress.h), 0 for
+   the types without it, and 1 / w(d / h) for the pair's weight (see the header)
+------------------------------------------------------------------------- */
+
+template <int DIMENSION, class Kernel> void PairSPHSoil::pack_artificial_stress()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->nmax > nmax_artificial) {
+    nmax_artificial = atom->nmax;
+    memory->destroy(artificial);
+    memory->create(artificial, nmax_artificial * ARTIFICIAL, "pair:artificial");
+  }
+  double **stress = avec->stress;
+  const int *type = atom->type;
+  const double *rho = atom->rho, *rmass = atom->rmass, *h = avec->smoothing_length;
+  for (int i = 0; i < nall; i++) {
+    double *row = artificial + (size_t) i * ARTIFICIAL;
+    if (type_artificial_stress[type[i]]) {
+      SPHSoil::artificial_stress<DIMENSION>(stress[i], rho[i], artificial_stress_epsilon,
+                                            row + A_STRESS);
+    } else {
+      for (int k = 0; k < 6; k++) row[A_STRESS + k] = 0.0;
+    }
+    const double spacing = SPHSoil::volume_spacing(rmass[i] / rho[i], DIMENSION);
+    row[A_INVERSE_SHAPE] = 1.0 / Kernel::shape(spacing / h[i]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the sums into the atoms' arrays (owned and ghost: the atom style's reverse
+   communication then brings the ghosts' shares to their owners)
+------------------------------------------------------------------------- */
+
+template <int DIMENSION> void PairSPHSoil::unpack_sums()
+{
+  // without Newton's third law for ghost pairs, ghost rows hold shares that their owners
+  // compute themselves
+  const int n = force->newton_pair ? atom->nlocal + atom->nghost : atom->nlocal;
+  double **f = atom->f, **strain_rate = avec->strain_rate, **spin = avec->spin;
+  double *drho = atom->drho;
+  constexpr int D = DIMENSION;
+  for (int i = 0; i < n; i++) {
+    const double *sum = sums + (size_t) i * SUM_ROW<D>();
+    for (int a = 0; a < D; a++) f[i][a] += sum[S_FORCE + a];
+    drho[i] += sum[S_DRHO<D>()];
+    // strain rate (Voigt) and spin (xy xz yz): the symmetric and antisymmetric parts
+    const double *g = sum + S_GRADIENT<D>();
+    for (int a = 0; a < D; a++) strain_rate[i][a] += g[a * D + a];
+    for (int a = 0; a < D; a++)
+      for (int b = a + 1; b < D; b++) {
+        strain_rate[i][SPHSoil::voigt_index(a, b)] += 0.5 * (g[a * D + b] + g[b * D + a]);
+        spin[i][a + b - 1] += 0.5 * (g[a * D + b] - g[b * D + a]);
+      }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   a pair's separation dx = x_i - x_j, r, h_ij and gradient factor (grad W = factor dx), from
+   i's position and h and j's packed row; false beyond the support (the list has a skin)
+------------------------------------------------------------------------- */
+
+template <int DIMENSION, class Kernel>
+inline bool PairSPHSoil::pair_geometry(const double *xi, double hi, const double *pj,
+                                       PairGeometry &g)
+{
+  g.dx[0] = xi[0] - pj[P_X];
+  g.dx[1] = xi[1] - pj[P_X + 1];
+  g.dx[2] = DIMENSION == 3 ? xi[2] - pj[P_X + 2] : 0.0;
+  g.r2 = g.dx[0] * g.dx[0] + g.dx[1] * g.dx[1] + g.dx[2] * g.dx[2];
+  g.hij = 0.5 * (hi + pj[P_H]);
+  constexpr double SUPPORT2 = Kernel::SUPPORT * Kernel::SUPPORT;
+  if (g.r2 >= SUPPORT2 * g.hij * g.hij) return false;
+  // the square root and the two divisions are independent of each other, so that the
+  // processor overlaps them; at r = 0 (coinciding particles) q = 0 takes the kernel's inner
+  // piece, and 1/max(r^2, DBL_MIN) keeps the unused h/r finite (0) without a branch
+  g.r = sqrt(g.r2);
+  g.inv_h = 1.0 / g.hij;
+  const double inv_r2 = 1.0 / std::max(g.r2, DBL_MIN);
+  g.factor = Kernel::template gradient_factor_inside<DIMENSION>(g.r, g.inv_h, g.hij * g.r * inv_r2);
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   soil particle s and the image of mirror wall particle w (soil_wall_images.h): s takes its
+   share, w the opposite force (Newton's third law: the soil's force on the structure); a wall
+   moved by a fix (move, rigid) brings its velocity, a wall at rest has v_w = 0 and the terms of
+   a static wall. `sign` dx = x_s - x_w.
+------------------------------------------------------------------------- */
+
+template <int DIMENSION, bool VIRIAL>
+SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double sign,
+                                                     const double dx[3], double r2, double hij,
+                                                     double factor, double c_ij)
+{
+  constexpr int D = DIMENSION;
+  const int newton_pair = force->newton_pair, nlocal = atom->nlocal;
+  const bool update_soil = newton_pair || soil < nlocal;
+  const bool update_wall = newton_pair || wall < nlocal;
+  const double *ps = packed + (size_t) soil * SPHSoil::PACKED;
+  const double *pw = packed + (size_t) wall * SPHSoil::PACKED;
+  const double *normal = avec->wall_normal[wall];
+  const double wall_distance = avec->wall_distance[wall];
+  const int wall_type = atom->type[wall];
+
+  // seen from the soil particle: x_s - x_w; the image (soil_wall_images.h)
+  double separation[3] = {0.0, 0.0, 0.0};
+  for (int a = 0; a < D; a++) separation[a] = sign * dx[a];
+  SPHSoil::MirrorImage image;
+  SPHSoil::mirror_image<D>(ps, pw, normal, wall_distance, separation, walls->slips()[wall_type],
+                           walls->frictions()[wall_type], image);
+  const double rhos = ps[P_RHO];
+  const double viscosity_h =
+      SPHSoil::viscosity_length(viscosity_h0, SPHSoil::viscosity_h_weight(viscosity_h0), hij);
+  SPHSoil::PairTerms<D> terms;
+  SPHSoil::pair_terms<D>(separation, r2, hij, viscosity_h, factor, image.dv, image.approach,
+                         image.viscous_approach, image.stress_sum, rhos, c_ij, viscosity_alpha,
+                         viscosity_beta, terms);
+
+  const double mw = pw[P_MASS], mass_product = ps[P_MASS] * mw;
+  if (VIRIAL)
+    ev_tally_xyz(soil, wall, nlocal, newton_pair, 0.0, 0.0, mass_product * terms.force[0],
+                 mass_product * terms.force[1], D == 3 ? mass_product * terms.force[2] : 0.0,
+                 separation[0], separation[1], separation[2]);
+  if (update_wall) {
+    double *ow = sums + (size_t) wall * SUM_ROW<D>();
+    for (int a = 0; a < D; a++) ow[S_FORCE + a] -= mass_product * terms.force[a];
+  }
+  if (!update_soil) return;
+  double *os = sums + (size_t) soil * SUM_ROW<D>();
+  os[S_DRHO<D>()] += mw * terms.density_rate;
+  for (int a = 0; a < D; a++) os[S_FORCE + a] += mass_product * terms.force[a];
+  // the image's volume: the wall particle's mass at the soil's density
+  const double volume = mw / rhos;
+  for (int c = 0; c < D; c++)
+    for (int d = 0; d < D; d++) os[S_GRADIENT<D>() + c * D + d] += volume * terms.gradient[c][d];
+}
+
+/* ----------------------------------------------------------------------
+   the SPH sums of doc/theory.rst section 2 over a half neighbour list: every pair once,
+   its contributions to both particles (Newton's third law: momentum is
+   conserved exactly); ghosts' shares return to their owners by reverse
+   communication (the atom style carries drho, strain rate and spin back)
+------------------------------------------------------------------------- */
+
+template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL> void PairSPHSoil::eval()
+{
+  using SPHSoil::voigt_index;
+  constexpr int D = DIMENSION;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  // members as locals: the stores to the sums (double *) could otherwise alias the double
+  // members, which the compiler would then reload for every pair
+  const double alpha = viscosity_alpha, beta_viscosity = viscosity_beta, h0 = viscosity_h0;
+  const double h0_weight = SPHSoil::viscosity_h_weight(viscosity_h0);
+  double *const *const c_type = sound_speed_ij;
+  const int *const wall_kind = walls->kinds();
+  const int newton_pair = force->newton_pair;
+
+  pack_atoms<D>();    // (re)allocates the packed rows: take their addresses after it
+  walls->prepare(packed, neighbours, kernel, D);
+  if (ARTIFICIAL_STRESS) pack_artificial_stress<D, Kernel>();
+  const int *const artificial_type = type_artificial_stress.data();
+  const double *const in = packed;
+  double *const out = sums;
+  constexpr int ROW = SUM_ROW<D>();
+  constexpr int DRHO = S_DRHO<D>(), GRADIENT = S_GRADIENT<D>();
+  const int *const partners = neighbours.partner_data();
+
+  for (int i = 0; i < nlocal; i++) {
+    const int itype = type[i];
+    // i's inputs as local copies: the stores to j's sums (double *) could alias the packed
+    // rows, and the compiler would reload them for every pair
+    const double *pi = in + (size_t) i * SPHSoil::PACKED;
+    double xi[3], vi[3], si[6];
+    for (int a = 0; a < 3; a++) {
+      xi[a] = pi[P_X + a];
+      vi[a] = pi[P_V + a];
+    }
+    for (int k = 0; k < 6; k++) si[k] = pi[P_STRESS + k];
+    const double hi = pi[P_H];
+    const double mi = pi[P_MASS], rhoi = pi[P_RHO], volume_i = pi[P_VOLUME];
+    const double *c_i = c_type[itype];
+
+    // i's shares, accumulated here and stored once after the j loop
+    double drho_i = 0.0, force_i[D], gradient_i[D][D];
+    for (int a = 0; a < D; a++) {
+      force_i[a] = 0.0;
+      for (int b = 0; b < D; b++) gradient_i[a][b] = 0.0;
+    }
+
+    // the plain pairs: soil-soil, or soil and an extrapolated wall particle (a partner like a
+    // soil particle, with the soil's state extrapolated to it; its own rates are summed and
+    // never used). Seen from i: grad = dW/dx_i; j gets the same terms with the opposite force
+    // and dW/dx_j = -grad (Newton's third law). Without Newton's third law for ghost pairs,
+    // a ghost j's row is written and never read (unpack_sums()).
+    const int plain_end = neighbours.plain_end(i);
+    for (int jj = neighbours.first(i); jj < plain_end; jj++) {
+      const int j = partners[jj];
+      const double *pj = in + (size_t) j * SPHSoil::PACKED;
+      PairGeometry g;
+      if (!pair_geometry<D, Kernel>(xi, hi, pj, g)) continue;
+      const int jtype = type[j];
+      const double *sj = pj + P_STRESS;
+      double dv[3], stress_sum[6];
+      for (int a = 0; a < D; a++) {
+        dv[a] = vi[a] - pj[P_V + a];
+        for (int b = a; b < D; b++) {
+          const int k = voigt_index(a, b);
+          stress_sum[k] = si[k] + sj[k];
+        }
+      }
+      if (ARTIFICIAL_STRESS && (artificial_type[itype] || artificial_type[jtype])) {
+        // (R_i + R_j) (W(r) / W(spacing))^4
+        const double *ai = artificial + (size_t) i * ARTIFICIAL;
+        const double *aj = artificial + (size_t) j * ARTIFICIAL;
+        const double weight = SPHSoil::artificial_stress_weight(
+            Kernel::shape(g.r * g.inv_h) * 0.5 * (ai[A_INVERSE_SHAPE] + aj[A_INVERSE_SHAPE]));
+        for (int a = 0; a < D; a++)
+          for (int b = a; b < D; b++) {
+            const int k = voigt_index(a, b);
+            stress_sum[k] += weight * (ai[A_STRESS + k] + aj[A_STRESS + k]);
+          }
+      }
+      double approach = 0.0;
+      for (int a = 0; a < D; a++) approach += dv[a] * g.dx[a];
+      SPHSoil::PairTerms<D> terms;
+      const double viscosity_h = SPHSoil::viscosity_length(h0, h0_weight, g.hij);
+      SPHSoil::pair_terms<D>(g.dx, g.r2, g.hij, viscosity_h, g.factor, dv, approach, approach,
+                             stress_sum, 0.5 * (rhoi + pj[P_RHO]), c_i[jtype], alpha,
+                             beta_viscosity, terms);
+
+      const double mj = pj[P_MASS], volume_j = pj[P_VOLUME], mass_product = mi * mj;
+      if (VIRIAL)
+        ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, mass_product * terms.force[0],
+                     mass_product * terms.force[1], D == 3 ? mass_product * terms.force[2] : 0.0,
+                     g.dx[0], g.dx[1], g.dx[2]);
+      double *oj = out + (size_t) j * ROW;
+      drho_i += mj * terms.density_rate;
+      oj[DRHO] += mi * terms.density_rate;
+      for (int a = 0; a < D; a++) {
+        const double force = mass_product * terms.force[a];
+        force_i[a] += force;
+        oj[S_FORCE + a] -= force;
+      }
+      // g_i += V_j (v_j - v_i) x grad, and g_j += V_i (v_i - v_j) x (-grad): the same tensor
+      for (int c = 0; c < D; c++)
+        for (int d = 0; d < D; d++) {
+          gradient_i[c][d] += volume_j * terms.gradient[c][d];
+          oj[GRADIENT + c * D + d] += volume_i * terms.gradient[c][d];
+        }
+    }
+
+    double *oi = out + (size_t) i * ROW;
+    oi[DRHO] += drho_i;
+    for (int a = 0; a < D; a++) oi[S_FORCE + a] += force_i[a];
+    for (int c = 0; c < D; c++)
+      for (int d = 0; d < D; d++) oi[GRADIENT + c * D + d] += gradient_i[c][d];
+
+    // a soil particle and a mirror wall particle: out of line, so that the plain pair above
+    // keeps its registers (inlined, the larger loop cost 15 instructions per pair)
+    const bool wall_i = wall_kind[itype] == SPHSoil::NEIGHBOUR_MIRROR_WALL;
+    for (int jj = plain_end; jj < neighbours.end(i); jj++) {
+      const int j = partners[jj];
+      PairGeometry g;
+      if (!pair_geometry<D, Kernel>(xi, hi, in + (size_t) j * SPHSoil::PACKED, g)) continue;
+      mirror_wall_pair<D, VIRIAL>(wall_i ? j : i, wall_i ? i : j, wall_i ? -1.0 : 1.0, g.dx, g.r2, g.hij,
+                          g.factor, c_i[type[j]]);
+    }
+  }
+
+  unpack_sums<D>();
+}
+

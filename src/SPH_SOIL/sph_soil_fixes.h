@@ -1,0 +1,82 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package for LAMMPS: the fixes the package depends on, found by what
+   they do rather than by their style's name, so that variants and accelerated
+   styles (gravity/omp, rigid/small, rigid/nve/small, ...) count as the plain
+   ones do:
+   - a fix that sets a gravity vector answers extract("gvec");
+   - a fix that moves atoms has time_integrate (fix move, fix nve, ...) or
+     rigid_flag (fix rigid and its variants) set;
+   - fix sph/soil answers extract("sph_soil_integrator"): it never moves
+     wall particles, whatever its group.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_SOIL_FIXES_H
+#define LMP_SPH_SOIL_FIXES_H
+
+#include "atom.h"
+#include "fix.h"
+#include "lammps.h"
+#include "modify.h"
+
+#include <mpi.h>
+#include <vector>
+
+namespace LAMMPS_NS {
+namespace SPHSoilFixes {
+
+// the name under which fix sph/soil answers extract()
+constexpr const char *INTEGRATOR = "sph_soil_integrator";
+
+inline bool sets_gravity(Fix *fix)
+{
+  int dim = 0;
+  return fix->extract("gvec", dim) != nullptr;
+}
+
+inline bool is_sph_soil_integrator(Fix *fix)
+{
+  int dim = 0;
+  return fix->extract(INTEGRATOR, dim) != nullptr;
+}
+
+// moves its atoms (other than fix sph/soil, which integrates soil particles only)
+inline bool moves_atoms(Fix *fix)
+{
+  return (fix->time_integrate || fix->rigid_flag) && !is_sph_soil_integrator(fix);
+}
+
+inline std::vector<Fix *> gravity_fixes(LAMMPS *lmp)
+{
+  std::vector<Fix *> found;
+  for (int i = 0; i < lmp->modify->nfix; i++)
+    if (sets_gravity(lmp->modify->fix[i])) found.push_back(lmp->modify->fix[i]);
+  return found;
+}
+
+// the first fix (by the order of the input) that `selects` and whose group holds an owned atom
+// i with `holds(i)` on some rank; nullptr if none. Collective.
+template <class Selects, class Holds> Fix *first_fix_holding(LAMMPS *lmp, Selects selects, Holds holds)
+{
+  const Atom *atom = lmp->atom;
+  for (int f = 0; f < lmp->modify->nfix; f++) {
+    Fix *fix = lmp->modify->fix[f];
+    if (!selects(fix)) continue;
+    int mine = 0, anywhere = 0;
+    for (int i = 0; i < atom->nlocal && !mine; i++)
+      if ((atom->mask[i] & fix->groupbit) && holds(i)) mine = 1;
+    MPI_Allreduce(&mine, &anywhere, 1, MPI_INT, MPI_MAX, lmp->world);
+    if (anywhere) return fix;
+  }
+  return nullptr;
+}
+
+// whether a fix other than fix sph/soil moves some atom i with `holds(i)`. Collective.
+template <class Holds> bool moved_by_other_fixes(LAMMPS *lmp, Holds holds)
+{
+  return first_fix_holding(lmp, moves_atoms, holds) != nullptr;
+}
+
+}    // namespace SPHSoilFixes
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,326 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package for LAMMPS: the walls of pair_style sph/soil (see the header)
+------------------------------------------------------------------------- */
+
+#include "sph_soil_walls.h"
+
+#include "atom.h"
+#include "atom_vec_sph_soil.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_sph_soil_walls.h"
+#include "force.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "pair.h"
+#include "soil_packed_rows.h"
+#include "soil_wall_images.h"
+#include "sph_soil_compat.h"
+#include "sph_soil_fixes.h"
+#include "sph_soil_offenders.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace SPHSoil;
+
+/* ---------------------------------------------------------------------- */
+
+SPHSoilWalls::SPHSoilWalls(LAMMPS *lmp, Pair *owner_, int instance) :
+    Pointers(lmp), owner(owner_), avec(nullptr), has_mirror(false), has_extrapolated(false),
+    may_turn(false), kinematics(nullptr), nmax(0), sums(nullptr), state(nullptr)
+{
+  kinematics_id = "SPH_SOIL_WALLS_" + std::to_string(instance);
+}
+
+SPHSoilWalls::~SPHSoilWalls()
+{
+  memory->destroy(sums);
+  memory->destroy(state);
+  if (modify && modify->find_fix(kinematics_id) >= 0) modify->delete_fix(kinematics_id);
+}
+
+/* ----------------------------------------------------------------------
+   per type: the kind (soil or a wall's boundary), a mirror wall's slip and friction
+------------------------------------------------------------------------- */
+
+void SPHSoilWalls::classify(const std::vector<SoilMaterial> &materials,
+                            const std::vector<int> &has_material, bool free_slip)
+{
+  const int ntypes = (int) materials.size() - 1;
+  kind_of_type.assign(ntypes + 1, NEIGHBOUR_SOIL);
+  slip_of_type.assign(ntypes + 1, SLIP_NONE);
+  friction_of_type.assign(ntypes + 1, 0.0);
+  has_mirror = has_extrapolated = false;
+  for (int t = 1; t <= ntypes; t++) {
+    const SoilMaterial &m = materials[t];
+    if (!has_material[t] || !m.is_wall()) continue;
+    const WallSlip slip = m.slip == WallSlip::pair_default
+        ? (free_slip ? WallSlip::freeslip : WallSlip::noslip)
+        : m.slip;
+    const bool extrapolated = m.boundary == WallBoundary::extrapolate;
+    kind_of_type[t] = extrapolated ? NEIGHBOUR_EXTRAPOLATED_WALL : NEIGHBOUR_MIRROR_WALL;
+    has_extrapolated = has_extrapolated || extrapolated;
+    has_mirror = has_mirror || !extrapolated;
+    // free slip and friction act across a plane; an extrapolated wall has none
+    if (extrapolated && slip != WallSlip::noslip)
+      error->all(FLERR, "Pair sph/soil: wall type {} has boundary extrapolate with {}: an "
+                        "extrapolated wall is no-slip (free slip and friction need the plane of "
+                        "'boundary mirror')", t, slip == WallSlip::freeslip ? "freeslip" : "friction");
+    slip_of_type[t] = slip == WallSlip::noslip ? SLIP_NONE
+        : slip == WallSlip::freeslip           ? SLIP_FREE
+                                               : SLIP_FRICTION;
+    friction_of_type[t] = m.friction;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   mirror wall particles need their plane, and must lie behind it
+------------------------------------------------------------------------- */
+
+void SPHSoilWalls::check_particles() const
+{
+  using SPHSoilOffenders::find_offenders;
+  auto soil_avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  const int *type = atom->type;
+  double **x = atom->x;
+  double **normal = soil_avec->wall_normal;
+  const double *distance = soil_avec->wall_distance, *h = soil_avec->smoothing_length;
+  auto mirror = [&](int i) { return kind_of_type[type[i]] == NEIGHBOUR_MIRROR_WALL; };
+
+  const auto no_plane = find_offenders(
+      lmp,
+      [&](int i) {
+        return mirror(i) &&
+            normal[i][0] * normal[i][0] + normal[i][1] * normal[i][1] + normal[i][2] * normal[i][2] == 0.0;
+      },
+      [&](int i, double *values) {
+        for (int a = 0; a < 3; a++) values[a] = x[i][a];
+        values[3] = type[i];
+      });
+  if (no_plane)
+    error->all(FLERR, "Pair sph/soil: {} wall particle(s) have no wall plane (atom {} of type {} at "
+                      "{} {} {}); set it with 'sph_soil/set <group> wall px py pz nx ny nz'",
+               no_plane.count, no_plane.first, (int) no_plane.values[3], no_plane.values[0],
+               no_plane.values[1], no_plane.values[2]);
+  // behind the plane: distance >= 0 (a round-off margin for particles on the plane)
+  const auto in_front = find_offenders(
+      lmp, [&](int i) { return mirror(i) && distance[i] < -1.0e-9 * h[i]; },
+      [&](int i, double *values) {
+        values[0] = distance[i];
+        for (int a = 0; a < 3; a++) values[1 + a] = normal[i][a];
+      });
+  if (in_front)
+    error->all(FLERR, "Pair sph/soil: {} wall particle(s) lie in front of their wall plane (atom "
+                      "{}: distance {} along the normal {} {} {}); the normal given to "
+                      "'sph_soil/set <group> wall' must point into the soil, with the wall "
+                      "particles behind the plane", in_front.count, in_front.first,
+               in_front.values[0], in_front.values[1], in_front.values[2], in_front.values[3]);
+}
+
+/* ----------------------------------------------------------------------
+   the fixes the walls depend on, found by what they do (sph_soil_fixes.h): those that set a
+   gravity vector (the soil's body force behind extrapolated walls), and those that move wall
+   particles, which may turn them (fix rigid and its variants, fix move rotate with 'update
+   dipole' turn mu): then the normals go to the ghosts every step
+------------------------------------------------------------------------- */
+
+void SPHSoilWalls::init()
+{
+  avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  gravity_fixes = SPHSoilFixes::gravity_fixes(lmp);
+  may_turn = false;
+  if (has_mirror) {
+    const int *type = atom->type;
+    may_turn = SPHSoilFixes::moved_by_other_fixes(
+        lmp, [&](int i) { return kind_of_type[type[i]] == NEIGHBOUR_MIRROR_WALL; });
+  }
+  if (any()) create_kinematics();
+}
+
+// the kinematics fix, created once (pair_granular creates its history fix the same way)
+void SPHSoilWalls::create_kinematics()
+{
+  if (modify->find_fix(kinematics_id) < 0)
+    modify->add_fix(kinematics_id + " all SPH_SOIL_WALLS");
+  kinematics = dynamic_cast<FixSPHSoilWalls *>(modify->fix[modify->find_fix(kinematics_id)]);
+  if (!kinematics) error->all(FLERR, "Pair sph/soil: fix {} is not the walls' kinematics", kinematics_id);
+  std::vector<int> wall_of_type(kind_of_type.size());
+  for (size_t t = 0; t < kind_of_type.size(); t++) wall_of_type[t] = kind_of_type[t] != NEIGHBOUR_SOIL;
+  kinematics->set_wall_types(wall_of_type);
+}
+
+/* ---------------------------------------------------------------------- */
+
+namespace {
+struct Extrapolate {
+  SPHSoilWalls *walls;
+  double *packed;
+  const NeighbourList &list;
+  int dimension;
+  template <class Kernel> void operator()() const
+  {
+    if (dimension == 2) walls->extrapolate<2, Kernel>(packed, list);
+    else walls->extrapolate<3, Kernel>(packed, list);
+  }
+};
+}    // namespace
+
+void SPHSoilWalls::prepare(double *packed, const NeighbourList &list, KernelKind kernel, int dimension)
+{
+  if (may_turn) comm->forward_comm_array(4, atom->mu);
+  if (has_extrapolated) with_kernel(kernel, Extrapolate{this, packed, list, dimension});
+}
+
+/* ----------------------------------------------------------------------
+   walls with boundary extrapolate (Adami, Hu & Adams 2012, with the full stress; doc/theory.rst
+   4.5): a wall particle w takes the soil's stress, density and velocity, interpolated to it
+   with the kernel (Shepard: weights V_s W_ws over the soil particles s within its support),
+     sigma_w = sum V W sigma_s / sum V W - (g - a_w) . sum V W rho_s (x_w - x_s) / sum V W  I
+   (the weight of the soil between s and w, for soil under gravity g against a wall of
+   acceleration a_w), and moves, as an image of the soil, with 2 v_w - v~ (no slip). The pair
+   loop then treats it as a soil particle of that state. Its packed row is overwritten here.
+------------------------------------------------------------------------- */
+
+template <int DIMENSION, class Kernel>
+void SPHSoilWalls::extrapolate(double *packed, const NeighbourList &list)
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(sums);
+    memory->destroy(state);
+    memory->create(sums, nmax * XSUMS, "pair:extrapolation_sums");
+    memory->create(state, nmax * WSTATE, "pair:extrapolated_state");
+  }
+  if (nall > 0) memset(sums, 0, sizeof(double) * XSUMS * nall);
+  const int *type = atom->type;
+  const int *kind = kind_of_type.data();
+  const int newton_pair = force->newton_pair;
+  double **stress = avec->stress;
+  constexpr double SUPPORT2 = Kernel::SUPPORT * Kernel::SUPPORT;
+
+  const int *partners = list.partner_data();
+  for (int i = 0; i < nlocal; i++) {
+    const int wall_i = kind[type[i]];
+    for (int jj = list.first(i); jj < list.plain_end(i); jj++) {
+      const int j = partners[jj];
+      const int wall_j = kind[type[j]];
+      // a soil particle and an extrapolated wall particle
+      if (!((wall_i == NEIGHBOUR_EXTRAPOLATED_WALL && wall_j == NEIGHBOUR_SOIL) ||
+            (wall_i == NEIGHBOUR_SOIL && wall_j == NEIGHBOUR_EXTRAPOLATED_WALL)))
+        continue;
+      const int wall = wall_i ? i : j, soil = wall_i ? j : i;
+      if (!newton_pair && wall >= nlocal) continue;
+      const double *ps = packed + (size_t) soil * PACKED, *pw = packed + (size_t) wall * PACKED;
+      double r2 = 0.0, rw[3] = {0.0, 0.0, 0.0};
+      for (int a = 0; a < DIMENSION; a++) {
+        rw[a] = pw[P_X + a] - ps[P_X + a];
+        r2 += rw[a] * rw[a];
+      }
+      const double hij = 0.5 * (ps[P_H] + pw[P_H]);
+      if (r2 >= SUPPORT2 * hij * hij) continue;
+      const double weight = ps[P_VOLUME] * Kernel::value(DIMENSION, sqrt(r2), hij);
+      double *sum = sums + (size_t) wall * XSUMS;
+      sum[X_WEIGHT] += weight;
+      for (int k = 0; k < 6; k++) sum[X_STRESS + k] += weight * stress[soil][k];
+      sum[X_DENSITY] += weight * ps[P_RHO];
+      for (int a = 0; a < DIMENSION; a++) {
+        sum[X_HYDROSTATIC + a] += weight * ps[P_RHO] * rw[a];
+        sum[X_VELOCITY + a] += weight * ps[P_V + a];
+      }
+    }
+  }
+  if (newton_pair) SPHSoilCompat::reverse_comm_pair(comm, owner);
+
+  double gravity[3];
+  body_force(gravity);
+  const double *rho = atom->rho;
+  for (int i = 0; i < nlocal; i++) {
+    if (kind[type[i]] != NEIGHBOUR_EXTRAPOLATED_WALL) continue;
+    const double *sum = sums + (size_t) i * XSUMS;
+    const double *vw = packed + (size_t) i * PACKED + P_V;
+    double *own = state + (size_t) i * WSTATE;
+    if (!(sum[X_WEIGHT] > 0.0)) {
+      // no soil near: the wall particle is nobody's partner
+      for (int k = 0; k < 6; k++) own[W_STRESS + k] = 0.0;
+      for (int a = 0; a < 3; a++) own[W_VELOCITY + a] = vw[a];
+      own[W_DENSITY] = rho[i];
+      continue;
+    }
+    const double inv_weight = 1.0 / sum[X_WEIGHT];
+    const double *acceleration = kinematics->acceleration(i);
+    double hydrostatic = 0.0;
+    for (int a = 0; a < DIMENSION; a++)
+      hydrostatic += (gravity[a] - acceleration[a]) * sum[X_HYDROSTATIC + a];
+    hydrostatic *= inv_weight;
+    const double density = sum[X_DENSITY] * inv_weight;
+    const double inv_density2 = 1.0 / (density * density);
+    for (int k = 0; k < 6; k++)
+      own[W_STRESS + k] = (sum[X_STRESS + k] * inv_weight - (k < 3 ? hydrostatic : 0.0)) * inv_density2;
+    for (int a = 0; a < 3; a++)
+      own[W_VELOCITY + a] = 2.0 * vw[a] - (a < DIMENSION ? sum[X_VELOCITY + a] * inv_weight : vw[a]);
+    own[W_DENSITY] = density;
+  }
+  SPHSoilCompat::forward_comm_pair(comm, owner);
+
+  for (int i = 0; i < nall; i++) {
+    if (kind[type[i]] != NEIGHBOUR_EXTRAPOLATED_WALL) continue;
+    const double *own = state + (size_t) i * WSTATE;
+    double *row = packed + (size_t) i * PACKED;
+    for (int k = 0; k < 6; k++) row[P_STRESS + k] = own[W_STRESS + k];
+    for (int a = 0; a < 3; a++) row[P_V + a] = own[W_VELOCITY + a];
+    row[P_RHO] = own[W_DENSITY];
+    row[P_VOLUME] = row[P_MASS] / own[W_DENSITY];
+  }
+}
+
+// the soil's body force: the sum of the gravity fixes' acceleration vectors
+void SPHSoilWalls::body_force(double gravity[3]) const
+{
+  for (int a = 0; a < 3; a++) gravity[a] = 0.0;
+  for (Fix *fix : gravity_fixes) {
+    int dim;
+    if (const double *g = static_cast<const double *>(fix->extract("gvec", dim)))
+      for (int a = 0; a < 3; a++) gravity[a] += g[a];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int SPHSoilWalls::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int k = 0; k < XSUMS; k++) buf[m++] = sums[(size_t) i * XSUMS + k];
+  return m;
+}
+
+void SPHSoilWalls::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++)
+    for (int c = 0; c < XSUMS; c++) sums[(size_t) list[k] * XSUMS + c] += buf[m++];
+}
+
+int SPHSoilWalls::pack_forward_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++)
+    for (int c = 0; c < WSTATE; c++) buf[m++] = state[(size_t) list[k] * WSTATE + c];
+  return m;
+}
+
+void SPHSoilWalls::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int c = 0; c < WSTATE; c++) state[(size_t) i * WSTATE + c] = buf[m++];
+}
+
+double SPHSoilWalls::memory_usage() const
+{
+  return (double) nmax * (XSUMS + WSTATE) * sizeof(double);
+}
