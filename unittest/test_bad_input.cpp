@@ -382,8 +382,8 @@ std::vector<BadInput> cases()
   error("StaticRefineRegion", "patch", {}, "sph_soil/refine all region nowhere",
         "sph_soil/refine region nowhere does not exist");
   error("StaticRefineUnknownKeyword", "patch", {}, "sph_soil/refine all maxlevel 2",
-        "Illegal sph_soil/refine keyword maxlevel (allowed: criterion, region, separation, smoothing, "
-        "dref)");
+        "Illegal sph_soil/refine keyword maxlevel (allowed: criterion, region, threshold, separation, "
+        "smoothing, dref)");
   error("StaticRefineUnknownCriterion", "patch", {}, "sph_soil/refine all criterion 0.5",
         "Illegal sph_soil/refine criterion 0.5 (allowed: strain, all, v_name)");
   error("StaticRefineWithoutPairStyle", "box",

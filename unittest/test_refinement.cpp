@@ -7,6 +7,7 @@
 #include "domain.h"
 #include "fix.h"
 #include "force.h"
+#include "compute.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "pair_sph_soil.h"
@@ -487,6 +488,29 @@ TEST_F(Refinement, VariableCriterionSplitsExactlyWhereNonZero)
     command("sph_soil/refine all criterion v_corner");
   });
   check("sph_soil/refine");
+}
+
+// Computes that build a neighbour list of their own (rdf, property/local) at the steps where
+// particles split: the split leaves the ghosts rebuilt and LAMMPS's lists valid (before, the
+// occasional list's build crashed at such a step), and they see the daughters.
+TEST_F(Refinement, LocalComputesRunAtSplitSteps)
+{
+  patch(2, 12, true);
+  HIDE_OUTPUT([&] {
+    command("fix integrate all sph/soil cfl 0.1");
+    command("fix refine all sph/soil/refine 5 threshold 1e-9 maxlevel 2");
+    command("compute rdf all rdf 20 cutoff 0.02");
+    command("fix rdf all ave/time 5 1 5 c_rdf[*] mode vector");
+    command("compute pairs all property/local patom1 patom2");
+    command("dump pairs all local 5 pairs.dump c_pairs[*]");
+    command("run 10 post no");
+  });
+  // two checks split: 144 -> 576 -> most daughters again, and the pairs of the last split step
+  EXPECT_GT(lmp->atom->natoms, 576);
+  auto pairs = lmp->modify->compute[lmp->modify->find_compute("pairs")];
+  bigint rows = pairs->size_local_rows, all_rows = 0;
+  MPI_Allreduce(&rows, &all_rows, 1, MPI_LMP_BIGINT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_GT(all_rows, lmp->atom->natoms);
 }
 
 TEST_F(Refinement, RestartAfterSplitsContinuesIdentically)

@@ -6,7 +6,6 @@
 
 #include "atom.h"
 #include "error.h"
-#include "input.h"
 #include "utils.h"
 #include "soil_refine_split.h"
 #include "sph_soil_compat.h"
@@ -184,7 +183,7 @@ void AtomVecSPHSoil::process_args(int narg, char **arg)
   } else if (narg > 0) {
     error->all(FLERR, "Illegal atom_style sph/soil command: it takes no arguments, got '{}'",
                arg[0]);
-  } else if (!sub_style && input->command && strcmp(input->command, "read_restart") == 0) {
+  } else if (!sub_style && SPHSoilCompat::atom_style_from_restart(lmp)) {
     error->all(FLERR, "Restart file holds atom_style sph/soil data without a format number, "
                       "written before 2026-12-03 (format 1); this build of SPH_SOIL reads format {}: "
                       "read it with the build that wrote it and save the state with write_data",

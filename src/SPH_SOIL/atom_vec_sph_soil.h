@@ -64,6 +64,10 @@ class AtomVecSPHSoil : public AtomVec {
     NSAVED = 17
   };
 
+  // the axis along which sph_soil/set geostatic last put the overburden (0 x, 1 y, 2 z), -1
+  // if never: pair_style sph/soil warns when gravity points along another
+  int geostatic_vertical = -1;
+
   // The layout of this style's per-atom restart data has a number; a restart file of another
   // number stops read_restart with a message that names both (process_args()).
   static constexpr int RESTART_FORMAT = 2;

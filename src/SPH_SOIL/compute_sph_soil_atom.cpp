@@ -13,66 +13,92 @@
 #include "soil_constitutive.h"
 #include "update.h"
 
-#include <cstring>
-#include <string>
-
 using namespace LAMMPS_NS;
 
 namespace {
-struct Name {
-  const char *name;
-  int quantity;
-};
-// accepted names (a few aliases that users of other codes would type)
-const Name names[] = {{"sxx", 0},     {"syy", 1},      {"szz", 2},      {"sxy", 3},     {"sxz", 4},
-                      {"syz", 5},     {"pressure", 6}, {"sqrtJ2", 7},   {"strain", 8},  {"yielded", 9},
-                      {"density", 10}, {"rho", 10},    {"h", 11},       {"level", 12},
-                      {"neighbours", 13}, {"neighbors", 13}, {"shear_strain", 14},
-                      {"shear_strain_rate", 15}};
+using Source = ComputeSPHSoilAtom::Source;
+const char *const MATERIALS = "its materials", *const LIST = "its list";
 
-// the names for an error message, without the aliases (each quantity's first name)
-std::string allowed_names()
+double stress_component(const Source &s, int i, int k)
 {
-  std::string list;
-  int last = -1;
-  for (const auto &n : names)
-    if (n.quantity > last) {
-      list += (list.empty() ? "" : " ") + std::string(n.name);
-      last = n.quantity;
-    }
-  return list;
+  return s.avec->stress[i][k];
 }
 }    // namespace
+
+/* ----------------------------------------------------------------------
+   the values: one line each
+------------------------------------------------------------------------- */
+
+const std::vector<ComputeSPHSoilAtom::Value> &ComputeSPHSoilAtom::values()
+{
+  static const std::vector<Value> table = {
+      {{"sxx"}, nullptr, [](const Source &s, int i) { return stress_component(s, i, 0); }},
+      {{"syy"}, nullptr, [](const Source &s, int i) { return stress_component(s, i, 1); }},
+      {{"szz"}, nullptr, [](const Source &s, int i) { return stress_component(s, i, 2); }},
+      {{"sxy"}, nullptr, [](const Source &s, int i) { return stress_component(s, i, 3); }},
+      {{"sxz"}, nullptr, [](const Source &s, int i) { return stress_component(s, i, 4); }},
+      {{"syz"}, nullptr, [](const Source &s, int i) { return stress_component(s, i, 5); }},
+      {{"pressure"}, nullptr, [](const Source &s, int i) { return SPHSoil::pressure(s.avec->stress[i]); }},
+      {{"sqrtJ2"}, nullptr, [](const Source &s, int i) { return SPHSoil::sqrt_j2(s.avec->stress[i]); }},
+      {{"strain"}, nullptr,
+       [](const Source &s, int i) { return SPHSoil::strain_measure(s.avec->total_strain[i]); }},
+      {{"yielded"}, MATERIALS,
+       [](const Source &s, int i) {
+         const auto model = s.pair->model(s.atom->type[i]);
+         return model && model->on_yield_surface(s.avec->stress[i]) ? 1.0 : 0.0;
+       }},
+      {{"density", "rho"}, nullptr, [](const Source &s, int i) { return s.atom->rho[i]; }},
+      {{"h"}, nullptr, [](const Source &s, int i) { return s.avec->smoothing_length[i]; }},
+      {{"level"}, nullptr, [](const Source &s, int i) { return (double) s.avec->level[i]; }},
+      {{"neighbours", "neighbors"}, LIST,
+       [](const Source &s, int i) { return (double) s.pair->listed_partners(i); }},
+      {{"shear_strain"}, nullptr,
+       [](const Source &s, int i) { return SPHSoil::shear_strain(s.avec->total_strain[i]); }},
+      {{"shear_strain_rate"}, nullptr,
+       [](const Source &s, int i) { return SPHSoil::shear_strain(s.avec->strain_rate[i]); }},
+  };
+  return table;
+}
+
+std::string ComputeSPHSoilAtom::value_names()
+{
+  std::string list;
+  for (const auto &v : values()) list += (list.empty() ? "" : " ") + v.names[0];
+  return list;
+}
 
 /* ---------------------------------------------------------------------- */
 
 ComputeSPHSoilAtom::ComputeSPHSoilAtom(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), nmax(0), values(nullptr), table(nullptr), pair(nullptr)
+    Compute(lmp, narg, arg), nmax(0), vector(nullptr), array(nullptr), pair(nullptr)
 {
   if (!atom->style_match("sph/soil"))
     error->all(FLERR, "Compute sph/soil/atom requires atom_style sph/soil");
+  auto find = [&](const std::string &name) -> const Value * {
+    for (const auto &v : values())
+      for (const auto &n : v.names)
+        if (n == name) return &v;
+    return nullptr;
+  };
   for (int iarg = 3; iarg < narg; iarg++) {
-    int found = -1;
-    for (const auto &n : names)
-      if (strcmp(arg[iarg], n.name) == 0) found = n.quantity;
-    if (found < 0)
+    const Value *value = find(arg[iarg]);
+    if (!value)
       error->all(FLERR, "Illegal compute sph/soil/atom value {} (allowed: {})", arg[iarg],
-                 allowed_names());
-    quantities.push_back((Quantity) found);
+                 value_names());
+    chosen.push_back(value);
   }
-  if (quantities.empty())
-    quantities = {STRAIN, PRESSURE, SQRTJ2, YIELDED, DENSITY, H, LEVEL};
+  if (chosen.empty())
+    for (const char *name : {"strain", "pressure", "sqrtJ2", "yielded", "density", "h", "level"})
+      chosen.push_back(find(name));
 
   peratom_flag = 1;
-  size_peratom_cols = quantities.size() == 1 ? 0 : quantities.size();
+  size_peratom_cols = chosen.size() == 1 ? 0 : chosen.size();
 }
-
-/* ---------------------------------------------------------------------- */
 
 ComputeSPHSoilAtom::~ComputeSPHSoilAtom()
 {
-  memory->destroy(values);
-  memory->destroy(table);
+  memory->destroy(vector);
+  memory->destroy(array);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -80,36 +106,10 @@ ComputeSPHSoilAtom::~ComputeSPHSoilAtom()
 void ComputeSPHSoilAtom::init()
 {
   pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));
-  for (auto q : quantities)
-    if (q == YIELDED && !pair)
-      error->all(FLERR, "Compute sph/soil/atom yielded needs pair_style sph/soil (its materials)");
-    else if (q == NEIGHBOURS && !pair)
-      error->all(FLERR, "Compute sph/soil/atom neighbours needs pair_style sph/soil (its list)");
-}
-
-/* ---------------------------------------------------------------------- */
-
-double ComputeSPHSoilAtom::evaluate(Quantity q, int i) const
-{
-  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
-  const double *s = avec->stress[i];
-  switch (q) {
-    case SXX: case SYY: case SZZ: case SXY: case SXZ: case SYZ: return s[q - SXX];
-    case PRESSURE: return SPHSoil::pressure(s);
-    case SQRTJ2: return SPHSoil::sqrt_j2(s);
-    case STRAIN: return SPHSoil::strain_measure(avec->total_strain[i]);
-    case YIELDED: {
-      const auto model = pair ? pair->model(atom->type[i]) : nullptr;
-      return model && model->on_yield_surface(s) ? 1.0 : 0.0;
-    }
-    case DENSITY: return atom->rho[i];
-    case H: return avec->smoothing_length[i];
-    case LEVEL: return avec->level[i];
-    case NEIGHBOURS: return pair->listed_partners(i);
-    case SHEAR_STRAIN: return SPHSoil::shear_strain(avec->total_strain[i]);
-    case SHEAR_STRAIN_RATE: return SPHSoil::shear_strain(avec->strain_rate[i]);
-  }
-  return 0.0;
+  for (const Value *v : chosen)
+    if (v->needs_pair && !pair)
+      error->all(FLERR, "Compute sph/soil/atom {} needs pair_style sph/soil ({})", v->names[0],
+                 v->needs_pair);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -120,31 +120,30 @@ void ComputeSPHSoilAtom::compute_peratom()
   if (atom->nmax > nmax) {
     nmax = atom->nmax;
     if (size_peratom_cols == 0) {
-      memory->destroy(values);
-      memory->create(values, nmax, "sph/soil/atom:values");
-      vector_atom = values;
+      memory->destroy(vector);
+      memory->create(vector, nmax, "sph/soil/atom:vector");
+      vector_atom = vector;
     } else {
-      memory->destroy(table);
-      memory->create(table, nmax, size_peratom_cols, "sph/soil/atom:table");
-      array_atom = table;
+      memory->destroy(array);
+      memory->create(array, nmax, size_peratom_cols, "sph/soil/atom:array");
+      array_atom = array;
     }
   }
+  const Source source{dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil")), atom, pair};
   const int nlocal = atom->nlocal;
   const int *mask = atom->mask;
-  const int n = quantities.size();
+  const int n = chosen.size();
   for (int i = 0; i < nlocal; i++) {
     const bool in_group = mask[i] & groupbit;
     for (int k = 0; k < n; k++) {
-      const double value = in_group ? evaluate(quantities[k], i) : 0.0;
-      if (size_peratom_cols == 0) values[i] = value;
-      else table[i][k] = value;
+      const double value = in_group ? chosen[k]->of(source, i) : 0.0;
+      if (size_peratom_cols == 0) vector[i] = value;
+      else array[i][k] = value;
     }
   }
 }
 
-/* ---------------------------------------------------------------------- */
-
 double ComputeSPHSoilAtom::memory_usage()
 {
-  return (double) nmax * quantities.size() * sizeof(double);
+  return (double) nmax * chosen.size() * sizeof(double);
 }

@@ -3,8 +3,10 @@
 
    Per-atom soil quantities for dump custom, dump image and compute
    reduce: stress components, pressure, sqrt(J2), the strain measure
-   exx^2 + eyy^2 + ezz^2 of the refinement criterion, a yielded flag,
-   density, h and refinement level. See doc/compute_sph_soil_atom.rst.
+   exx^2 + eyy^2 + ezz^2 of the refinement criterion, shear strain and its
+   rate, a yielded flag, density, h, refinement level, listed neighbours.
+   The values are a table in the .cpp: a new value is one line there.
+   See doc/compute_sph_soil_atom.rst.
 ------------------------------------------------------------------------- */
 
 #ifdef COMPUTE_CLASS
@@ -18,6 +20,7 @@ ComputeStyle(sph/soil/atom,ComputeSPHSoilAtom);
 
 #include "compute.h"
 
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -30,16 +33,30 @@ class ComputeSPHSoilAtom : public Compute {
   void compute_peratom() override;
   double memory_usage() override;
 
- private:
-  enum Quantity { SXX, SYY, SZZ, SXY, SXZ, SYZ, PRESSURE, SQRTJ2, STRAIN, YIELDED, DENSITY, H, LEVEL,
-                  NEIGHBOURS, SHEAR_STRAIN, SHEAR_STRAIN_RATE };
-  std::vector<Quantity> quantities;
-  int nmax;
-  double *values;      // one quantity
-  double **table;      // several quantities
-  class PairSPHSoil *pair;
+  // what a value is computed from
+  struct Source {
+    class AtomVecSPHSoil *avec;
+    class Atom *atom;
+    class PairSPHSoil *pair;    // nullptr without pair_style sph/soil
+  };
+  // one value of the table: its names (the first, then aliases that users of other codes
+  // would type), whether it needs the pair style (its materials or its list) and the value of
+  // owned atom i
+  struct Value {
+    std::vector<std::string> names;
+    const char *needs_pair;    // what of the pair it needs, for the error; nullptr: nothing
+    double (*of)(const Source &, int i);
+  };
+  static const std::vector<Value> &values();
+  // the first names, for the "allowed" list of errors
+  static std::string value_names();
 
-  double evaluate(Quantity, int i) const;
+ private:
+  std::vector<const Value *> chosen;
+  int nmax;
+  double *vector;    // one value
+  double **array;    // several values
+  class PairSPHSoil *pair;
 };
 
 }    // namespace LAMMPS_NS

@@ -13,6 +13,7 @@
 #include "group.h"
 #include "force.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "pair_sph_soil.h"
 #include "region.h"
 #include "soil_constitutive.h"
@@ -64,8 +65,8 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
       maxlevel = SPHSoilInput::integer(FLERR, lmp, "fix sph/soil/refine maxlevel", value, 1,
                                        SPHSoil::MAX_LEVEL);
     } else {
-      error->all(FLERR, "Illegal fix sph/soil/refine keyword {} (allowed: {}, threshold, {}, "
-                        "maxlevel)", keyword, SPHSoilRefineSelection::KEYWORDS, SPHSoilRefineSplitter::KEYWORDS);
+      error->all(FLERR, "Illegal fix sph/soil/refine keyword {} (allowed: {}, {}, "
+                        "maxlevel)", keyword, SPHSoilRefineSelection::keywords(), SPHSoilRefineSplitter::KEYWORDS);
     }
   }
 
@@ -242,8 +243,30 @@ void FixSPHSoilRefine::end_of_step()
 
   last_split = splitter->split(parents);
   total_split += last_split;
+  reneighbour();
   next_reneighbor = update->ntimestep + 1;
   integrator->particles_refined(STYLE);
+}
+
+/* ----------------------------------------------------------------------
+   After a split the ghosts are gone (the daughters took their slots). Output at this step
+   (dumps, and computes that build a neighbour list of their own: rdf, pair/local,
+   property/local) would see that state, and LAMMPS's neighbour lists would point at atoms that
+   are no longer there (an occasional list built on it crashed). So the ghosts are rebuilt and
+   LAMMPS's lists too. The owned atoms stay where they are: the daughters lie within a quarter
+   spacing of their parents, inside the ghost region, as atoms drift between reneighbourings;
+   an exchange now would move atoms without their forces and rates, which the next step's first
+   half needs. The next step reneighbours anyway (next_reneighbor): the run is the same.
+------------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::reneighbour()
+{
+  if (domain->triclinic) domain->x2lamda(atom->nlocal);
+  comm->borders();
+  if (domain->triclinic) domain->lamda2x(atom->nlocal + atom->nghost);
+  if (modify->n_pre_neighbor) modify->pre_neighbor();
+  neighbor->build(1);
+  if (modify->n_post_neighbor) modify->post_neighbor();
 }
 
 /* ----------------------------------------------------------------------

@@ -48,6 +48,7 @@ class FixSPHSoilRefine : public Fix {
   bigint last_split_step;     // that step
   bigint total_split;         // since the fix was defined (kept in restart files)
 
+  void reneighbour();
   void report_parameters();
   void report_capacity();
 };

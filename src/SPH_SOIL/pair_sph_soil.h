@@ -104,6 +104,7 @@ class PairSPHSoil : public Pair {
   void warn_spacing();
   void warn_coinciding();
   void warn_soil_in_rigid_bodies();
+  void warn_geostatic_across_gravity();
 
   // the loop (pair_sph_soil_loop.cpp). Per owned and ghost atom: the packed rows of its inputs
   // (soil_packed_rows.h), and its sums: force, density rate, the velocity gradient's sum

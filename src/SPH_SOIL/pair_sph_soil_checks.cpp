@@ -32,6 +32,28 @@ void PairSPHSoil::check_particles()
   warn_density();
   warn_spacing();
   warn_soil_in_rigid_bodies();
+  warn_geostatic_across_gravity();
+}
+
+// sph_soil/set geostatic puts the overburden along y in 2D and z in 3D unless told otherwise
+// ('vertical'); a gravity that points along another axis makes that stress wrong
+void PairSPHSoil::warn_geostatic_across_gravity()
+{
+  const int vertical = avec->geostatic_vertical;
+  if (vertical < 0 || comm->me != 0) return;
+  double g[3] = {0.0, 0.0, 0.0};
+  for (Fix *fix : SPHSoilFixes::gravity_fixes(lmp)) {
+    int dim;
+    if (const double *gvec = static_cast<const double *>(fix->extract("gvec", dim)))
+      for (int a = 0; a < 3; a++) g[a] += gvec[a];
+  }
+  int along = 0;
+  for (int a = 1; a < 3; a++)
+    if (std::fabs(g[a]) > std::fabs(g[along])) along = a;
+  if (g[along] != 0.0 && along != vertical)
+    error->warning(FLERR, "Pair sph/soil: sph_soil/set geostatic put the overburden along {} but "
+                          "gravity points along {} ({} {} {}): add 'vertical {}' to geostatic",
+                   "xyz"[vertical], "xyz"[along], g[0], g[1], g[2], "xyz"[along]);
 }
 
 // Density within 10% of rho0: compression under soil's own weight changes it by p/K, well below 1%.

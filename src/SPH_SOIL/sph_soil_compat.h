@@ -26,6 +26,9 @@
    - Domain::find_region() index -> Domain::get_region_by_id()
    - Comm::forward_comm_pair(Pair *) -> forward_comm(Pair *), and reverse likewise
      (whether the Pair overload compiles)
+   - Input::command, the command being executed: protected in 29Sep2021
+     (whether it can be read; before, read_restart is told from the atom_style
+     command by the first argument of the command in hand)
    - Error::one() with exceptions on: 29Sep2021 writes the message but does
      not flush screen and log before main() calls MPI_Abort, so a batch run
      lost it; error_one() flushes on every release (no detection needed)
@@ -38,6 +41,7 @@
 #include "atom_vec.h"
 #include "domain.h"
 #include "error.h"
+#include "input.h"
 #include "lammps.h"
 #include "region.h"
 
@@ -160,6 +164,29 @@ namespace detail {
 inline Region *find_region(Domain *domain, const std::string &id)
 {
   return detail::find_region(domain, id, Preferred());
+}
+
+/* ---------------------------------------------------------------------- */
+// The command in hand
+
+namespace detail {
+  template <class I>
+  auto is_read_restart(I *input, Preferred) -> decltype(input->command, bool())
+  {
+    return input->command && std::string(input->command) == "read_restart";
+  }
+  template <class I> bool is_read_restart(I *input, Fallback)
+  {
+    // an atom style is created by atom_style (its name first), read_restart (a file name
+    // first) or replicate (with the stored arguments)
+    return input->narg > 0 && std::string(input->arg[0]) != "sph/soil";
+  }
+}    // namespace detail
+
+// Whether atom_style sph/soil is being created by read_restart (from its process_args()).
+inline bool atom_style_from_restart(LAMMPS *lmp)
+{
+  return detail::is_read_restart(lmp->input, Preferred());
 }
 
 /* ---------------------------------------------------------------------- */

@@ -45,7 +45,7 @@ void SPHSoilRefine::command(int narg, char **arg)
     const char *value = arg[iarg + 1];
     if (!selection.parse_keyword(keyword, value) && !splitter.parse_keyword(STYLE, keyword, value))
       error->all(FLERR, "Illegal sph_soil/refine keyword {} (allowed: {}, {})", keyword,
-                 SPHSoilRefineSelection::KEYWORDS, SPHSoilRefineSplitter::KEYWORDS);
+                 SPHSoilRefineSelection::keywords(), SPHSoilRefineSplitter::KEYWORDS);
   }
   if (force->pair == nullptr || !force->pair_match("sph/soil", 1))
     error->all(FLERR, "sph_soil/refine command requires pair_style sph/soil");

@@ -20,48 +20,70 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-// The registry: one line per criterion. `word` follows the keyword `criterion` (a trailing '_'
-// marks a prefix: v_name); `keywords` are the criterion's own, for messages.
-struct Criterion {
-  const char *word;
-  const char *keywords;
-  SPHSoilRefineCriterion *(*make)(LAMMPS *lmp, const std::string &word);
-};
-const Criterion CRITERIA[] = {
-    {"strain", "threshold", [](LAMMPS *lmp, const std::string &) -> SPHSoilRefineCriterion * {
-       return new SPHSoilRefineCriterionStrain(lmp);
-     }},
-    {"all", "", [](LAMMPS *lmp, const std::string &) -> SPHSoilRefineCriterion * {
-       return new SPHSoilRefineCriterionAll(lmp);
-     }},
-    {"v_", "", [](LAMMPS *lmp, const std::string &word) -> SPHSoilRefineCriterion * {
-       return new SPHSoilRefineCriterionVariable(lmp, word.substr(2));
-     }},
-};
+// the registry: one line per criterion
+std::vector<RefineCriterionEntry> &registry()
+{
+  static std::vector<RefineCriterionEntry> criteria = {
+      refine_criterion_entry<SPHSoilRefineCriterionStrain>(),
+      refine_criterion_entry<SPHSoilRefineCriterionAll>(),
+      refine_criterion_entry<SPHSoilRefineCriterionVariable>(),
+  };
+  return criteria;
+}
 
-bool matches(const Criterion &c, const std::string &word)
+bool matches(const RefineCriterionEntry &c, const std::string &word)
 {
   const std::string w = c.word;
   if (w.back() == '_') return word.size() > w.size() && word.compare(0, w.size(), w) == 0;
   return word == w;
 }
 
+std::string joined(const char *RefineCriterionEntry::*field)
+{
+  std::string list;
+  for (const auto &c : refine_criteria())
+    for (const auto &word : utils::split_words(c.*field)) list += (list.empty() ? "" : ", ") + word;
+  return list;
+}
+
 }    // namespace
 
-const char *const LAMMPS_NS::REFINE_CRITERIA = "strain, all, v_name";
+const std::vector<RefineCriterionEntry> &LAMMPS_NS::refine_criteria()
+{
+  return registry();
+}
+
+void LAMMPS_NS::register_refine_criterion(const RefineCriterionEntry &entry)
+{
+  registry().push_back(entry);
+}
+
+std::string LAMMPS_NS::refine_criterion_names()
+{
+  return joined(&RefineCriterionEntry::shown);
+}
+
+std::string LAMMPS_NS::refine_criterion_keywords()
+{
+  return joined(&RefineCriterionEntry::keywords);
+}
 
 std::unique_ptr<SPHSoilRefineCriterion> LAMMPS_NS::make_refine_criterion(LAMMPS *lmp,
                                                                          const std::string &command,
                                                                          const std::string &word)
 {
-  for (const auto &c : CRITERIA)
+  for (const auto &c : refine_criteria())
     if (matches(c, word)) return std::unique_ptr<SPHSoilRefineCriterion>(c.make(lmp, word));
-  lmp->error->all(FLERR, "Illegal {} criterion {} (allowed: {})", command, word, REFINE_CRITERIA);
+  lmp->error->all(FLERR, "Illegal {} criterion {} (allowed: {})", command, word,
+                  refine_criterion_names());
   return nullptr;
 }
 
-// (a definition for C++11, where LAMMPS 29Sep2021 compiles: the value is passed by reference)
-constexpr const char *SPHSoilRefineSelection::KEYWORDS;
+std::string SPHSoilRefineSelection::keywords()
+{
+  const std::string own = refine_criterion_keywords();
+  return "criterion, region" + (own.empty() ? "" : ", " + own);
+}
 
 /* ---------------------------------------------------------------------- */
 
@@ -88,7 +110,7 @@ bool SPHSoilRefineSelection::parse_keyword(const std::string &keyword, const cha
     criterion_keyword = keyword;
   } else {
     // a keyword of another criterion: say whose
-    for (const auto &c : CRITERIA)
+    for (const auto &c : refine_criteria())
       for (const auto &own : utils::split_words(c.keywords))
         if (own == keyword)
           error->all(FLERR, "Illegal {} {}: a keyword of criterion {}, not of criterion {}", command,

@@ -6,7 +6,7 @@
    region and maxlevel on top (SPHSoilRefineSelection). Criteria are chosen
    by keyword (`criterion strain|all|v_name`) from the registry in
    sph_soil_refine_criterion.cpp: a new criterion is one header with its
-   class and one entry there.
+   class and one line there.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SPH_SOIL_REFINE_CRITERION_H
@@ -41,11 +41,32 @@ class SPHSoilRefineCriterion : protected Pointers {
   virtual std::string describe() const = 0;
 };
 
-// The criterion of `word` (strain, all, v_name), or an error naming `command` and the choices.
+// The registry of criteria (sph_soil_refine_criterion.cpp): a criterion class names its word
+// after the keyword `criterion` (WORD; a trailing '_' makes it a prefix: v_name), how the
+// "allowed" lists show it (SHOWN) and its own keywords (KEYWORDS, space-separated), and is built
+// from (lmp, the word as given). A new criterion is its header and one registry line.
+struct RefineCriterionEntry {
+  const char *word, *shown, *keywords;
+  SPHSoilRefineCriterion *(*make)(LAMMPS *lmp, const std::string &word);
+};
+template <class Criterion> RefineCriterionEntry refine_criterion_entry()
+{
+  return {Criterion::WORD, Criterion::SHOWN, Criterion::KEYWORDS,
+          [](LAMMPS *lmp, const std::string &word) -> SPHSoilRefineCriterion * {
+            return new Criterion(lmp, word);
+          }};
+}
+const std::vector<RefineCriterionEntry> &refine_criteria();
+// add a criterion to the registry (a criterion outside the package; the tests' dummy)
+void register_refine_criterion(const RefineCriterionEntry &entry);
+// "strain, all, v_name": the words the registry takes, for messages
+std::string refine_criterion_names();
+// every criterion's own keywords, comma-separated, for messages
+std::string refine_criterion_keywords();
+
+// The criterion of `word`, or an error naming `command` and the choices.
 std::unique_ptr<SPHSoilRefineCriterion> make_refine_criterion(LAMMPS *lmp, const std::string &command,
                                                               const std::string &word);
-// the words make_refine_criterion() takes, for error messages
-extern const char *const REFINE_CRITERIA;
 
 // Group, region, level limit and criterion: the particles a refinement splits. One parser for
 // the keywords that fix sph/soil/refine and sph_soil/refine share.
@@ -56,7 +77,8 @@ class SPHSoilRefineSelection : protected Pointers {
 
   // criterion, region and the criterion's own keywords; false if `keyword` is none of them
   bool parse_keyword(const std::string &keyword, const char *value);
-  static constexpr const char *KEYWORDS = "criterion, region";
+  // its keywords and every criterion's own, for messages: "criterion, region, threshold"
+  static std::string keywords();
   // at init: the region (it may have been redefined) and the criterion's needs
   void init();
   // owned particles of `groupbit` below `maxlevel` (0: no limit) that the region contains and

@@ -12,7 +12,8 @@ namespace LAMMPS_NS {
 
 class SPHSoilRefineCriterionAll : public SPHSoilRefineCriterion {
  public:
-  explicit SPHSoilRefineCriterionAll(LAMMPS *lmp) : SPHSoilRefineCriterion(lmp) {}
+  static constexpr const char *WORD = "all", *SHOWN = "all", *KEYWORDS = "";
+  SPHSoilRefineCriterionAll(LAMMPS *lmp, const std::string &) : SPHSoilRefineCriterion(lmp) {}
   bool wants(int) const override { return true; }
   std::string describe() const override { return "all"; }
 };

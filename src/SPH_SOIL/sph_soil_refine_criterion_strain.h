@@ -17,7 +17,8 @@ namespace LAMMPS_NS {
 
 class SPHSoilRefineCriterionStrain : public SPHSoilRefineCriterion {
  public:
-  explicit SPHSoilRefineCriterionStrain(LAMMPS *lmp) :
+  static constexpr const char *WORD = "strain", *SHOWN = "strain", *KEYWORDS = "threshold";
+  SPHSoilRefineCriterionStrain(LAMMPS *lmp, const std::string &) :
       SPHSoilRefineCriterion(lmp), threshold(0.05), avec(nullptr)
   {
   }

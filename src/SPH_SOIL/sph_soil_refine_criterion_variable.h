@@ -17,8 +17,10 @@ namespace LAMMPS_NS {
 
 class SPHSoilRefineCriterionVariable : public SPHSoilRefineCriterion {
  public:
-  SPHSoilRefineCriterionVariable(LAMMPS *lmp, const std::string &name) :
-      SPHSoilRefineCriterion(lmp), name(name), ivar(-1)
+  static constexpr const char *WORD = "v_", *SHOWN = "v_name", *KEYWORDS = "";
+  // `word` is v_name
+  SPHSoilRefineCriterionVariable(LAMMPS *lmp, const std::string &word) :
+      SPHSoilRefineCriterion(lmp), name(word.substr(2)), ivar(-1)
   {
   }
 

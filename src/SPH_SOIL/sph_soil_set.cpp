@@ -22,6 +22,26 @@
 
 using namespace LAMMPS_NS;
 
+/* ----------------------------------------------------------------------
+   the keywords: one line each
+------------------------------------------------------------------------- */
+
+const std::vector<SPHSoilSet::Keyword> &SPHSoilSet::keywords()
+{
+  static const std::vector<Keyword> table = {
+      {"mass", 1, &SPHSoilSet::set_positive},
+      {"h", 1, &SPHSoilSet::set_positive},
+      {"density", 1, &SPHSoilSet::set_positive},
+      {"level", 1, &SPHSoilSet::set_level},
+      {"stress", AtomVecSPHSoil::NVOIGT, &SPHSoilSet::set_tensor},
+      {"strain", AtomVecSPHSoil::NVOIGT, &SPHSoilSet::set_tensor},
+      {"geostatic", 4, &SPHSoilSet::set_geostatic},
+      {"wall", 6, &SPHSoilSet::set_wall},
+      {"nowall", 0, &SPHSoilSet::set_nowall},
+  };
+  return table;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void SPHSoilSet::command(int narg, char **arg)
@@ -29,130 +49,182 @@ void SPHSoilSet::command(int narg, char **arg)
   if (domain->box_exist == 0)
     error->all(FLERR, "sph_soil/set command before simulation box is defined");
   if (narg < 2) error->all(FLERR, "Illegal sph_soil/set command: expected 'sph_soil/set group-ID keyword value ...'");
-  auto avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   if (!avec) error->all(FLERR, "sph_soil/set command requires atom_style sph/soil");
 
   const int igroup = group->find(arg[0]);
   if (igroup == -1) error->all(FLERR, "Could not find sph_soil/set group ID {}", arg[0]);
-  const int groupbit = group->bitmask[igroup];
+  groupbit = group->bitmask[igroup];
 
   if (comm->me == 0) utils::logmesg(lmp, "Setting sph/soil atom values ...\n");
+
+  bigint count = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (in_group(i)) count++;
+  bigint total = 0;
+  MPI_Allreduce(&count, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
 
   int iarg = 1;
   while (iarg < narg) {
     const std::string keyword = arg[iarg];
-    auto need = [&](int n) {
-      if (iarg + n >= narg)
-        error->all(FLERR, "Illegal sph_soil/set command: keyword {} needs {} value(s)", keyword, n);
-    };
-    const int nlocal = atom->nlocal;
-    const int *mask = atom->mask;
-    bigint count = 0;
-    for (int i = 0; i < nlocal; i++)
-      if (mask[i] & groupbit) count++;
-
-    if (keyword == "mass" || keyword == "h" || keyword == "density") {
-      need(1);
-      auto values = evaluate(parse_value(keyword, arg[iarg + 1]));
-      check_range(keyword, values, 0.0, true, "> 0", groupbit);
-      double *target = keyword == "mass" ? atom->rmass
-          : keyword == "h"              ? avec->smoothing_length
-                                        : atom->rho;
-      for (int i = 0; i < nlocal; i++)
-        if (mask[i] & groupbit) target[i] = values[i];
-      iarg += 2;
-    } else if (keyword == "level") {
-      need(1);
-      const int value = SPHSoilInput::integer(FLERR, lmp, "sph_soil/set level", arg[iarg + 1], 0,
-                                              SPHSoil::MAX_LEVEL);
-      for (int i = 0; i < nlocal; i++)
-        if (mask[i] & groupbit) avec->level[i] = value;
-      iarg += 2;
-    } else if (keyword == "stress" || keyword == "strain") {
-      need(AtomVecSPHSoil::NVOIGT);
-      double **target = keyword == "stress" ? avec->stress : avec->total_strain;
-      for (int k = 0; k < AtomVecSPHSoil::NVOIGT; k++) {
-        auto values = evaluate(parse_value(keyword, arg[iarg + 1 + k]));
-        check_range(keyword, values, -HUGE_VAL, true, "finite", groupbit);
-        // plane strain: no xz, yz shear (the pair sums never produce the rates that would
-        // change them, so a value set here would stay, unbalanced)
-        if (domain->dimension == 2 && k >= 4) {
-          const auto shear = SPHSoilOffenders::find_offenders(
-              lmp, [&](int i) { return (mask[i] & groupbit) && values[i] != 0.0; },
-              [&](int i, double *out) { out[0] = values[i]; });
-          if (shear)
-            error->all(FLERR, "Illegal sph_soil/set {}: the {} component must be 0 in 2D (plane "
-                              "strain), got {} for atom {}", keyword, k == 4 ? "xz" : "yz",
-                       shear.values[0], shear.first);
-        }
-        for (int i = 0; i < nlocal; i++)
-          if (mask[i] & groupbit) target[i][k] = values[i];
-      }
-      iarg += 1 + AtomVecSPHSoil::NVOIGT;
-    } else if (keyword == "geostatic") {
-      // sigma_v = rho0 g (v - v_surface) below the surface (0 above), sigma_h = K0 sigma_v;
-      // v is y in 2D and z in 3D
-      need(4);
-      using namespace SPHSoilInput;
-      const double surface = number(FLERR, lmp, "sph_soil/set geostatic surface", arg[iarg + 1]);
-      const double density = number(FLERR, lmp, "sph_soil/set geostatic density", arg[iarg + 2], above(0.0));
-      const double gravity = number(FLERR, lmp, "sph_soil/set geostatic gravity", arg[iarg + 3], at_least(0.0));
-      const double k0 = number(FLERR, lmp, "sph_soil/set geostatic K0", arg[iarg + 4],
-                               between(0.0, 10.0, false, false));
-      const int vertical = domain->dimension == 2 ? 1 : 2;
-      double **x = atom->x;
-      for (int i = 0; i < nlocal; i++) {
-        if (!(mask[i] & groupbit)) continue;
-        const double sv = density * gravity * MIN(x[i][vertical] - surface, 0.0);
-        double *stress = avec->stress[i];
-        for (int k = 0; k < 3; k++) stress[k] = k == vertical ? sv : k0 * sv;
-        for (int k = 3; k < 6; k++) stress[k] = 0.0;
-      }
-      iarg += 5;
-    } else if (keyword == "wall") {
-      need(6);
-      double point[3], normal[3];
-      for (int k = 0; k < 3; k++) {
-        point[k] = SPHSoilInput::number(FLERR, lmp, "sph_soil/set wall point", arg[iarg + 1 + k]);
-        normal[k] = SPHSoilInput::number(FLERR, lmp, "sph_soil/set wall normal", arg[iarg + 4 + k]);
-      }
-      const double norm = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-      if (!(norm > 0.0))
-        error->all(FLERR, "Illegal sph_soil/set wall: the normal ({} {} {}) must be non-zero",
-                   normal[0], normal[1], normal[2]);
-      if (domain->dimension == 2 && normal[2] != 0.0)
-        error->all(FLERR, "Illegal sph_soil/set wall: the normal must lie in the xy plane in 2D");
-      for (int k = 0; k < 3; k++) normal[k] /= norm;
-      double **x = atom->x;
-      for (int i = 0; i < nlocal; i++) {
-        if (!(mask[i] & groupbit)) continue;
-        double behind = 0.0;
-        for (int k = 0; k < 3; k++) {
-          avec->wall_normal[i][k] = normal[k];
-          behind += (point[k] - x[i][k]) * normal[k];
-        }
-        avec->wall_normal[i][3] = 1.0;    // the length of mu: fixes turn mu only when > 0
-        avec->wall_distance[i] = behind;
-      }
-      iarg += 7;
-    } else if (keyword == "nowall") {
-      for (int i = 0; i < nlocal; i++) {
-        if (!(mask[i] & groupbit)) continue;
-        for (int k = 0; k < 4; k++) avec->wall_normal[i][k] = 0.0;
-        avec->wall_distance[i] = 0.0;
-      }
-      iarg += 1;
-    } else {
-      error->all(FLERR,
-                 "Illegal sph_soil/set command: unknown keyword {} (allowed: mass, h, density, "
-                 "level, stress, strain, geostatic, wall, nowall)",
-                 keyword);
+    const Keyword *found = nullptr;
+    for (const auto &k : keywords())
+      if (keyword == k.name) found = &k;
+    if (!found) {
+      std::string allowed;
+      for (const auto &k : keywords()) allowed += (allowed.empty() ? "" : ", ") + std::string(k.name);
+      error->all(FLERR, "Illegal sph_soil/set command: unknown keyword {} (allowed: {})", keyword,
+                 allowed);
     }
-
-    bigint total = 0;
-    MPI_Allreduce(&count, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (iarg + found->count >= narg)
+      error->all(FLERR, "Illegal sph_soil/set command: keyword {} needs {} value(s)", keyword,
+                 found->count);
+    const int extra = (this->*(found->apply))(keyword, arg + iarg + 1, narg - iarg - 1);
+    iarg += 1 + found->count + extra;
     if (comm->me == 0) utils::logmesg(lmp, "  {} settings made for {}\n", total, keyword);
   }
+
+  // the state changed: the rates saved at the end of the last run no longer belong to it
+  for (int i = 0; i < atom->nlocal; i++)
+    if (in_group(i)) avec->saved_rates[i][AtomVecSPHSoil::SAVED_FLAG] = 0.0;
+}
+
+bool SPHSoilSet::in_group(int i) const
+{
+  return atom->mask[i] & groupbit;
+}
+
+/* ----------------------------------------------------------------------
+   mass, h, density: > 0
+------------------------------------------------------------------------- */
+
+int SPHSoilSet::set_positive(const std::string &keyword, char **args, int)
+{
+  const auto values = evaluate(parse_value(keyword, args[0]));
+  check_range(keyword, values, 0.0, true, "> 0");
+  double *target = keyword == "mass" ? atom->rmass
+      : keyword == "h"              ? avec->smoothing_length
+                                    : atom->rho;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (in_group(i)) target[i] = values[i];
+  return 0;
+}
+
+int SPHSoilSet::set_level(const std::string &, char **args, int)
+{
+  const int value =
+      SPHSoilInput::integer(FLERR, lmp, "sph_soil/set level", args[0], 0, SPHSoil::MAX_LEVEL);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (in_group(i)) avec->level[i] = value;
+  return 0;
+}
+
+/* ----------------------------------------------------------------------
+   stress, strain: six Voigt components
+------------------------------------------------------------------------- */
+
+int SPHSoilSet::set_tensor(const std::string &keyword, char **args, int)
+{
+  double **target = keyword == "stress" ? avec->stress : avec->total_strain;
+  for (int k = 0; k < AtomVecSPHSoil::NVOIGT; k++) {
+    const auto values = evaluate(parse_value(keyword, args[k]));
+    check_range(keyword, values, -HUGE_VAL, true, "finite");
+    // plane strain: no xz, yz shear (the pair sums never produce the rates that would
+    // change them, so a value set here would stay, unbalanced)
+    if (domain->dimension == 2 && k >= 4) {
+      const auto shear = SPHSoilOffenders::find_offenders(
+          lmp, [&](int i) { return in_group(i) && values[i] != 0.0; },
+          [&](int i, double *out) { out[0] = values[i]; });
+      if (shear)
+        error->all(FLERR, "Illegal sph_soil/set {}: the {} component must be 0 in 2D (plane "
+                          "strain), got {} for atom {}", keyword, k == 4 ? "xz" : "yz",
+                   shear.values[0], shear.first);
+    }
+    for (int i = 0; i < atom->nlocal; i++)
+      if (in_group(i)) target[i][k] = values[i];
+  }
+  return 0;
+}
+
+/* ----------------------------------------------------------------------
+   geostatic surface rho0 g K0 [vertical x|y|z]: sigma_v = rho0 g (v - v_surface) below the
+   surface (0 above), sigma_h = K0 sigma_v; v is y in 2D and z in 3D unless 'vertical' says
+   otherwise. The axis is kept (AtomVecSPHSoil::geostatic_vertical), so that pair_style sph/soil
+   can tell when gravity points along another
+------------------------------------------------------------------------- */
+
+int SPHSoilSet::set_geostatic(const std::string &, char **args, int available)
+{
+  using namespace SPHSoilInput;
+  const double surface = number(FLERR, lmp, "sph_soil/set geostatic surface", args[0]);
+  const double density = number(FLERR, lmp, "sph_soil/set geostatic density", args[1], above(0.0));
+  const double gravity = number(FLERR, lmp, "sph_soil/set geostatic gravity", args[2], at_least(0.0));
+  const double k0 = number(FLERR, lmp, "sph_soil/set geostatic K0", args[3],
+                           between(0.0, 10.0, false, false));
+  int vertical = domain->dimension == 2 ? 1 : 2;
+  int extra = 0;
+  if (available > 4 && strcmp(args[4], "vertical") == 0) {
+    if (available < 6)
+      error->all(FLERR, "Illegal sph_soil/set geostatic vertical: needs an axis (x, y or z)");
+    const std::string axis = args[5];
+    vertical = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : -1;
+    if (vertical < 0 || (domain->dimension == 2 && vertical == 2))
+      error->all(FLERR, "Illegal sph_soil/set geostatic vertical {}: must be x or y in 2D, x, y "
+                        "or z in 3D", axis);
+    extra = 2;
+  }
+  avec->geostatic_vertical = vertical;
+  double **x = atom->x;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!in_group(i)) continue;
+    const double sv = density * gravity * MIN(x[i][vertical] - surface, 0.0);
+    double *stress = avec->stress[i];
+    for (int k = 0; k < 3; k++) stress[k] = k == vertical ? sv : k0 * sv;
+    for (int k = 3; k < 6; k++) stress[k] = 0.0;
+  }
+  return extra;
+}
+
+/* ----------------------------------------------------------------------
+   wall px py pz nx ny nz: the plane of mirror wall particles; nowall: none
+------------------------------------------------------------------------- */
+
+int SPHSoilSet::set_wall(const std::string &, char **args, int)
+{
+  double point[3], normal[3];
+  for (int k = 0; k < 3; k++) {
+    point[k] = SPHSoilInput::number(FLERR, lmp, "sph_soil/set wall point", args[k]);
+    normal[k] = SPHSoilInput::number(FLERR, lmp, "sph_soil/set wall normal", args[3 + k]);
+  }
+  const double norm = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  if (!(norm > 0.0))
+    error->all(FLERR, "Illegal sph_soil/set wall: the normal ({} {} {}) must be non-zero",
+               normal[0], normal[1], normal[2]);
+  if (domain->dimension == 2 && normal[2] != 0.0)
+    error->all(FLERR, "Illegal sph_soil/set wall: the normal must lie in the xy plane in 2D");
+  for (int k = 0; k < 3; k++) normal[k] /= norm;
+  double **x = atom->x;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!in_group(i)) continue;
+    double behind = 0.0;
+    for (int k = 0; k < 3; k++) {
+      avec->wall_normal[i][k] = normal[k];
+      behind += (point[k] - x[i][k]) * normal[k];
+    }
+    avec->wall_normal[i][3] = 1.0;    // the length of mu: fixes turn mu only when > 0
+    avec->wall_distance[i] = behind;
+  }
+  return 0;
+}
+
+int SPHSoilSet::set_nowall(const std::string &, char **, int)
+{
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!in_group(i)) continue;
+    for (int k = 0; k < 4; k++) avec->wall_normal[i][k] = 0.0;
+    avec->wall_distance[i] = 0.0;
+  }
+  return 0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -195,14 +267,13 @@ std::vector<double> SPHSoilSet::evaluate(const Value &value)
 /* ---------------------------------------------------------------------- */
 
 void SPHSoilSet::check_range(const std::string &keyword, const std::vector<double> &values,
-                             double lo, bool lo_open, const char *allowed, int groupbit)
+                             double lo, bool lo_open, const char *allowed)
 {
-  const int *mask = atom->mask;
   const auto bad = SPHSoilOffenders::find_offenders(
       lmp,
       [&](int i) {
         const double v = values[i];
-        return (mask[i] & groupbit) && !(std::isfinite(v) && (lo_open ? v > lo : v >= lo));
+        return in_group(i) && !(std::isfinite(v) && (lo_open ? v > lo : v >= lo));
       },
       [&](int i, double *out) { out[0] = values[i]; });
   if (bad)

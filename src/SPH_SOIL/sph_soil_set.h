@@ -1,6 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPH_SOIL package for LAMMPS: command sph_soil/set
-   Sets the per-atom state of atom_style sph/soil for a group of atoms.
+   Sets the per-atom state of atom_style sph/soil for a group of atoms. The
+   keywords are a table in the .cpp (keyword, count of values, what it sets).
    See doc/sph_soil_set.rst.
 ------------------------------------------------------------------------- */
 
@@ -22,10 +23,27 @@ namespace LAMMPS_NS {
 
 class SPHSoilSet : public Command {
  public:
-  SPHSoilSet(class LAMMPS *lmp) : Command(lmp) {}
+  SPHSoilSet(class LAMMPS *lmp) : Command(lmp), avec(nullptr), groupbit(0) {}
   void command(int, char **) override;
 
  private:
+  class AtomVecSPHSoil *avec;
+  int groupbit;
+  // the keywords: each reads its `count` values from args and returns how many more words it
+  // took (optional ones)
+  struct Keyword {
+    const char *name;
+    int count;
+    int (SPHSoilSet::*apply)(const std::string &keyword, char **args, int available);
+  };
+  static const std::vector<Keyword> &keywords();
+  int set_positive(const std::string &keyword, char **args, int available);
+  int set_level(const std::string &keyword, char **args, int available);
+  int set_tensor(const std::string &keyword, char **args, int available);
+  int set_geostatic(const std::string &keyword, char **args, int available);
+  int set_wall(const std::string &keyword, char **args, int available);
+  int set_nowall(const std::string &keyword, char **args, int available);
+
   // A per-atom value given as a number or as v_name (equal- or atom-style variable).
   struct Value {
     double constant = 0.0;
@@ -34,7 +52,8 @@ class SPHSoilSet : public Command {
   Value parse_value(const std::string &keyword, const char *arg);
   std::vector<double> evaluate(const Value &value);
   void check_range(const std::string &keyword, const std::vector<double> &values, double lo,
-                   bool lo_open, const char *allowed, int groupbit);
+                   bool lo_open, const char *allowed);
+  bool in_group(int i) const;
 };
 
 }    // namespace LAMMPS_NS
