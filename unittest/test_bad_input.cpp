@@ -33,6 +33,7 @@ const char *const FILES[][2] = {
     {"empty.soil", "# nothing but comments\n\n"},
     {"kind.soil", "sand clay 1850 1.5e6 0.3 45 0 0\n"},
     {"word.soil", "sand soil 1850 1.5e6 0.3 forty-five 0 0\n"},
+    {"nan.soil", "sand soil 1850 nan 0.3 45 0 0\n"},
 };
 
 // a data file with one atom; `atom` is its Atoms line, `velocity` its Velocities line
@@ -162,7 +163,7 @@ std::vector<BadInput> cases()
   error("CoeffTooFewArguments", "patch", {}, "pair_coeff 1 1",
         "Incorrect args for pair_coeff sph/soil: expected 'I I soil rho0 model parameters' (models: "
         "drucker_prager K nu phi psi c [fit exact|associated|nonassociated] [tension T]; "
-        "mohr_coulomb K nu phi psi c), 'I I wall' or '* * file name1 ... name2'");
+        "mohr_coulomb K nu phi psi c [tension T]), 'I I wall' or '* * file name1 ... name2'");
   error("CoeffSoilParameterCount", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0",
         "Incorrect args for pair_coeff sph/soil: material of type(s) 1: drucker_prager needs 5 "
         "parameters (K nu phi psi c), got 4");
@@ -171,7 +172,7 @@ std::vector<BadInput> cases()
         "(allowed: drucker_prager, mohr_coulomb)");
   error("CoeffMohrCoulombOption", "patch", {},
         "pair_coeff 1 1 soil 2650 mohr_coulomb 0.7e6 0.3 19.8 0 0 fit exact",
-        "material of type(s) 1: mohr_coulomb takes 5 parameters (K nu phi psi c) and no options, got 'fit'");
+        "material of type(s) 1: mohr_coulomb: unknown option 'fit' (allowed: tension)");
   error("CoeffFitValue", "patch", {},
         "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 fit tresca",
         "material of type(s) 1: drucker_prager fit 'tresca': must be exact, associated or nonassociated");
@@ -424,6 +425,45 @@ std::vector<BadInput> cases()
                "Invalid velocity or stress of atom 1 in Velocities section of data file: must be finite "
                "(got velocity 0 0 0, stress -inf 0 0 0 0 0)",
                false, true, "Floating point number -1e400 in input script or data file is out of range"});
+  // ---- what a new user trips over (issue 26): each stops with a message that names the cause
+  error("MaterialFileNotANumber", "patch", {}, "pair_coeff * * nan.soil sand NULL",
+        "Invalid material file nan.soil for pair_coeff sph/soil: line 1: material sand: "
+        "drucker_prager parameter K: 'nan' is not a finite number");
+  error("DensityNeverSet", "walls",
+        {"sph_soil/set soil density 1 geostatic 0.1 2650 9.81 0.5",
+         "fix down soil gravity 9.81 vector 0 -1 0"},
+        "run 20 post no",
+        "times its material's rho0 (never set with 'sph_soil/set ... density'? an expansion at a "
+        "free surface, or a leak through a wall?)");
+  error("MohrCoulombTensionAtTheApex", "walls",
+        {"pair_coeff 1 1 soil 2650 mohr_coulomb 0.7e6 0.3 30 0 1e4",
+         "sph_soil/set soil stress 17300 17300 17300 0 0 0", "group one id 45",
+         "sph_soil/set one density 1e-300"},
+        "run 10 post no",
+        "soil particle(s) are in tension at the apex of their yield surface, where SPH is unstable: "
+        "give the soil a tension cut-off ('tension 0' of its model)");
+  error("SoilBehindAWall", "walls", {"set atom 25 y 0.018", "group one id 25",
+                                     "sph_soil/set one density 1e-300"},
+        "run 10 post no",
+        "soil particle(s) are behind a wall's plane: the soil crossed a wall (thicker walls, or a "
+        "smaller time step)");
+  error("HugeSmoothingLength", "patch", {SOIL, "pair_coeff 2 2 wall", "sph_soil/set all h 100"}, "run 0 post no",
+        "Pair sph/soil: h/d up to 1e+04 gives each particle about");
+  error("RefinementBeyondTheMemory", "patch",
+        {SOIL, "pair_coeff 2 2 wall", "fix integrate all sph/soil cfl 0.1", "fix refine all sph/soil/refine 1 criterion all maxlevel 30",
+         "shell putenv SPH_SOIL_MEMORY_LIMIT=5e7"},
+        "run 10 post no",
+        "more than the 0.05 GB of the node(s) of this run; lower maxlevel or limit the refinement to "
+        "a region");
+  warning("GeostaticAcrossGravity", "walls",
+          {"sph_soil/set soil geostatic 0.1 2650 9.81 0.5 vertical x",
+           "fix down soil gravity 9.81 vector 0 -1 0"},
+          "run 0 post no",
+          "Pair sph/soil: sph_soil/set geostatic put the overburden along x but gravity points along "
+          "y (0 -9.81 0): add 'vertical y' to geostatic");
+  warning("SoilInARigidBody", "walls", {"fix body soil rigid single"}, "run 0 post no",
+          "Fix body (rigid) moves soil particles as a rigid body: a structure is made of wall "
+          "particles (pair_coeff I I wall), soil particles are integrated by fix sph/soil");
   c.push_back({"DataColumnCount", "data", {"write bad.data " + data_file("1 1 1.0 0.1 1000 0 0.5 0.5")},
                "read_data bad.data", "Incorrect format in Atoms section of data file: 1 1 1.0 0.1 1000 0 "
                "0.5 0.5", false, true, "Incorrect atom format in data file"});

@@ -109,7 +109,7 @@ TEST(MaterialFile, RejectsBadEntriesNamingLineModelAndParameter)
   rejects("a soil 2650 mohr_coulomb 0.7e6 0.3 19.8 25 0\n",
           "line 1: material a: mohr_coulomb dilatancy angle psi = 25 must be in [0, phi = 19.8] degrees");
   rejects("a soil 2650 mohr_coulomb 0.7e6 0.3 19.8 0 0 fit associated\n",
-          "line 1: material a: mohr_coulomb takes 5 parameters (K nu phi psi c) and no options, got 'fit'");
+          "line 1: material a: mohr_coulomb: unknown option 'fit' (allowed: tension)");
   rejects("a soil 2650 mohr_coulomb 0.7e6 0.3\n",
           "line 1: material a: mohr_coulomb needs 5 parameters (K nu phi psi c), got 2");
   rejects("a soil -1 0.7e6 0.3 19.8 0 0\n", "line 1: material a: density rho0 = -1 must be finite and > 0");
@@ -131,4 +131,24 @@ TEST(MaterialFile, RejectsBadEntriesNamingLineModelAndParameter)
   rejects("w wall boundary curved\n",
           "line 1: material w: wall boundary 'curved' (allowed: mirror, extrapolate)");
   rejects("# nothing\n", "no material defined");
+}
+
+// What editors and users write: a UTF-8 byte-order mark at the start (skipped), 'nan' or 'inf'
+// for a number (a parameter that is not finite, not an unknown model), and the words that
+// defined a material, kept for restart files
+TEST(MaterialFile, ByteOrderMarkNotANumberAndTheDefiningWords)
+{
+  std::vector<SoilMaterial> list;
+  std::string error;
+  ASSERT_TRUE(parse_material_file("\xEF\xBB\xBFsand soil 1850 1.5e6 0.3 45 0 0\n", list, error)) << error;
+  ASSERT_EQ(list.size(), 1u);
+  EXPECT_EQ(list[0].name, "sand");
+  EXPECT_EQ(list[0].words, (std::vector<std::string>{"soil", "1850", "1.5e6", "0.3", "45", "0", "0"}));
+  SoilMaterial again;
+  ASSERT_TRUE(material_from_words(list[0].name, list[0].words, again, error));
+  EXPECT_EQ(drucker_prager(again).friction_angle, 45.0);
+  EXPECT_FALSE(parse_material_file("sand soil 1850 nan 0.3 45 0 0\n", list, error));
+  EXPECT_EQ(error, "line 1: material sand: drucker_prager parameter K: 'nan' is not a finite number");
+  EXPECT_FALSE(parse_material_file("sand soil 1850 mohr_coulomb inf 0.3 45 0 0\n", list, error));
+  EXPECT_EQ(error, "line 1: material sand: mohr_coulomb parameter K: 'inf' is not a finite number");
 }

@@ -260,3 +260,41 @@ TEST(MohrCoulomb, RegistryNamesTheModelAndItsParameter)
   EXPECT_EQ(error, "mohr_coulomb cohesion c = -1 must be finite and >= 0");
   EXPECT_EQ(model_keywords(), "drucker_prager, mohr_coulomb");
 }
+
+// The tension cut-off: no principal stress above T after the return; the others kept (in plane
+// strain and 3D); the cut-off lowers tensile_strength() to T, and T above the apex is refused.
+TEST(MohrCoulomb, TensionCutOffCapsEveryPrincipalStress)
+{
+  std::string error;
+  const auto no_cutoff = make_model("mohr_coulomb", {"1e7", "0.25", "30", "0", "1e4"}, error);
+  const auto model = make_model("mohr_coulomb", {"1e7", "0.25", "30", "0", "1e4", "tension", "0"}, error);
+  ASSERT_TRUE(model) << error;
+  const double apex = 1e4 / std::tan(30 * PI / 180);
+  EXPECT_NEAR(no_cutoff->tensile_strength(), apex, 1e-9 * apex);
+  EXPECT_EQ(model->tensile_strength(), 0.0);
+  // uniaxial tension of 5 kPa: inside Mohr-Coulomb (its apex is 17 kPa), beyond the cut-off
+  double stress[6] = {5000.0, -2000.0, -1000.0, 0.0, 0.0, 0.0};
+  double unchanged[6];
+  std::copy(stress, stress + 6, unchanged);
+  EXPECT_FALSE(no_cutoff->return_to_admissible(unchanged));
+  EXPECT_GT(model->yield_function(stress), 0.0);
+  ASSERT_TRUE(model->return_to_admissible(stress));
+  EXPECT_EQ(stress[0], 0.0);
+  EXPECT_NEAR(stress[1], -2000.0, 1e-9);
+  EXPECT_NEAR(stress[2], -1000.0, 1e-9);
+  EXPECT_TRUE(model->on_yield_surface(stress));
+  EXPECT_LE(model->yield_function(stress), 1e-9);
+  // a rotated biaxial tension: both tensile principal stresses capped, objectively
+  double rotated[6] = {3000.0, 1000.0, -500.0, 1500.0, 0.0, 0.0};
+  ASSERT_TRUE(model->return_to_admissible(rotated));
+  double values[3], vectors[3][3];
+  principal_stresses(rotated, values, vectors);
+  EXPECT_NEAR(values[0], 0.0, 1e-9);
+  EXPECT_LE(values[1], 1e-9);
+  // T above the apex
+  EXPECT_FALSE(make_model("mohr_coulomb", {"1e7", "0.25", "30", "0", "1e4", "tension", "2e4"}, error));
+  EXPECT_EQ(error, "mohr_coulomb tension = 20000: the tensile strength must be in [0, 17320.5] Pa, "
+                   "the apex c cot(phi) of this phi and c (the apex limits the tension already)");
+  EXPECT_FALSE(make_model("mohr_coulomb", {"1e7", "0.25", "30", "0", "1e4", "dilation", "2"}, error));
+  EXPECT_EQ(error, "mohr_coulomb: unknown option 'dilation' (allowed: tension)");
+}

@@ -278,13 +278,51 @@ void FixSPHSoil::stop_if_unstable(int first_unstable)
         values[0] = atom->rho[i];
         for (int a = 0; a < 3; a++) values[1 + a] = atom->v[i][a];
         values[4] = avec->stress[i][0];
+        values[5] = pair->material(atom->type[i]).density;
       });
   if (!unstable) return;
   const double *s = unstable.values;
   error->all(FLERR,
              "Fix sph/soil: particle {} became unstable at step {} (density {}, velocity {} {} "
-             "{}, stress xx {}); reduce the timestep (or the cfl value)",
-             unstable.first, update->ntimestep, s[0], s[1], s[2], s[3], s[4]);
+             "{}, stress xx {}); {}",
+             unstable.first, update->ntimestep, s[0], s[1], s[2], s[3], s[4],
+             likely_causes(s[0], s[5]));
+}
+
+/* ----------------------------------------------------------------------
+   what the run shows of the usual causes of an instability, for the message (collective):
+   soil in tension at the apex of its yield surface (SPH's tensile instability), the unstable
+   particle's density far from its material's, soil behind a wall's plane (a wall crossed);
+   else the time step
+------------------------------------------------------------------------- */
+
+std::string FixSPHSoil::likely_causes(double density, double reference_density)
+{
+  std::vector<std::string> causes;
+  bigint at_apex = 0, all_at_apex = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!integrated(i)) continue;
+    const auto model = model_of_type[atom->type[i]];
+    const double strength = model->tensile_strength(), mean = SPHSoil::mean_stress(avec->stress[i]);
+    if (strength > 0.0 && std::isfinite(strength) && mean >= 0.99 * strength) at_apex++;
+  }
+  MPI_Allreduce(&at_apex, &all_at_apex, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all_at_apex > 0)
+    causes.push_back(fmt::format("{} soil particle(s) are in tension at the apex of their yield "
+                                 "surface, where SPH is unstable: give the soil a tension cut-off "
+                                 "('tension 0' of its model)", all_at_apex));
+  if (!(density > 0.5 * reference_density && density < 2.0 * reference_density))
+    causes.push_back(fmt::format("its density is {:.3g} times its material's rho0 (never set with "
+                                 "'sph_soil/set ... density'? an expansion at a free surface, or a "
+                                 "leak through a wall?)", density / reference_density));
+  const bigint behind = pair->soil_behind_walls();
+  if (behind > 0)
+    causes.push_back(fmt::format("{} soil particle(s) are behind a wall's plane: the soil crossed "
+                                 "a wall (thicker walls, or a smaller time step)", behind));
+  if (causes.empty()) return "reduce the timestep (or the cfl value)";
+  std::string text = "likely causes: ";
+  for (size_t k = 0; k < causes.size(); k++) text += (k ? "; " : "") + causes[k];
+  return text + "; else reduce the timestep (or the cfl value)";
 }
 
 /* ---------------------------------------------------------------------- */

@@ -22,6 +22,7 @@ FixStyle(sph/soil,FixSPHSoil);
 #include "atom.h"
 #include "fix.h"
 
+#include <string>
 #include <vector>
 
 namespace SPHSoil {
@@ -92,6 +93,7 @@ class FixSPHSoil : public Fix {
   // whether atom i has a lower ID than atom j (any, if j < 0)
   bool lower_id(int i, int j) const { return j < 0 || atom->tag[i] < atom->tag[j]; }
   void stop_if_unstable(int first_unstable);
+  std::string likely_causes(double density, double reference_density);
   double stable_timestep();
   void adapt_timestep();
 };

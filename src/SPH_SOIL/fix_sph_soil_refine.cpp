@@ -22,13 +22,13 @@
 #include "sph_soil_compat.h"
 #include "sph_soil_input.h"
 #include "sph_soil_refine_criterion.h"
+#include "sph_soil_memory.h"
 #include "sph_soil_refine_splitter.h"
 #include "update.h"
 #include "utils.h"
 
 #include <cmath>
 #include <cstring>
-#include <unistd.h>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -42,7 +42,7 @@ const char *const STYLE = "Fix sph/soil/refine";
 
 FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxlevel(1),
-    integrator(nullptr), parameters_reported(false), last_split(0), last_split_step(-1),
+    integrator(nullptr), parameters_reported(false), bytes_per_particle(0.0), node_bytes(0.0), last_split(0), last_split_step(-1),
     total_split(0)
 {
   if (narg < 4) error->all(FLERR, "Illegal fix sph/soil/refine command: expected 'fix ID group sph/soil/refine N keyword value ...'");
@@ -163,25 +163,15 @@ void FixSPHSoilRefine::report_capacity()
   double per_atom_max;
   MPI_Allreduce(&per_atom, &per_atom_max, 1, MPI_DOUBLE, MPI_MAX, world);
   const double needed = worst_all * per_atom_max;
-  // the memory of the nodes: each node's first rank counts its node's
-  MPI_Comm node;
-  MPI_Comm_split_type(world, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
-  int node_rank;
-  MPI_Comm_rank(node, &node_rank);
-  MPI_Comm_free(&node);
-  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
-  double mine[2] = {0.0, 0.0}, nodes[2];
-  if (node_rank == 0 && pages > 0 && page_size > 0) {
-    mine[0] = (double) pages * (double) page_size;
-    mine[1] = 1.0;
-  }
-  MPI_Allreduce(mine, nodes, 2, MPI_DOUBLE, MPI_SUM, world);
-  if (nodes[0] > 0.0 && needed > nodes[0] && comm->me == 0)
+  bytes_per_particle = per_atom_max;
+  const auto nodes = SPHSoilMemory::nodes(world);
+  node_bytes = nodes.bytes;
+  if (nodes.bytes > 0.0 && needed > nodes.bytes && comm->me == 0)
     error->warning(FLERR, "Fix sph/soil/refine: the group split down to level {} would hold {:.3g} "
                           "particles, about {:.3g} GB at {:.0f} bytes each, more than the {:.3g} GB "
                           "of the {} node(s) of this run; lower maxlevel or limit the refinement "
                           "to a region", maxlevel, worst_all, needed / 1e9, per_atom_max,
-                   nodes[0] / 1e9, (int) nodes[1]);
+                   nodes.bytes / 1e9, nodes.count);
 }
 
 /* ----------------------------------------------------------------------
@@ -240,6 +230,15 @@ void FixSPHSoilRefine::end_of_step()
   last_split_step = update->ntimestep;
   last_split = 0;
   if (all_candidates == 0) return;
+  // a split that cannot fit stops here, not in an allocation somewhere in LAMMPS
+  const double after = (double) atom->natoms +
+      (double) all_candidates * (SPHSoil::daughter_count(domain->dimension) - 1);
+  if (node_bytes > 0.0 && after * bytes_per_particle > node_bytes)
+    error->all(FLERR, "Fix sph/soil/refine: splitting {} particles at step {} would make {:.3g} "
+                      "particles, about {:.3g} GB at {:.0f} bytes each, more than the {:.3g} GB of "
+                      "the node(s) of this run; lower maxlevel or limit the refinement to a region",
+               all_candidates, update->ntimestep, after, after * bytes_per_particle / 1e9,
+               bytes_per_particle, node_bytes / 1e9);
 
   last_split = splitter->split(parents);
   total_split += last_split;

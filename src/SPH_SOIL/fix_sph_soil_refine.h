@@ -43,6 +43,7 @@ class FixSPHSoilRefine : public Fix {
   std::unique_ptr<class SPHSoilRefineSplitter> splitter;
   class FixSPHSoil *integrator;
   bool parameters_reported;
+  double bytes_per_particle, node_bytes;    // at set-up: a split that would not fit stops
 
   bigint last_split;          // particles split at the last refinement step
   bigint last_split_step;     // that step

@@ -182,6 +182,7 @@ void PairSPHSoil::init_style()
     if (materials.has(type[i])) local_max = MAX(local_max, h[i]);
   MPI_Allreduce(&local_max, &max_h, 1, MPI_DOUBLE, MPI_MAX, world);
   if (max_h <= 0.0) error->all(FLERR, "Pair sph/soil: no particle with a material and h > 0");
+  check_list_fits();
 
   // every type has a material here (init_one stops otherwise)
   walls->classify(materials.all(), materials.set_flags(), free_slip);

@@ -69,6 +69,9 @@ class PairSPHSoil : public Pair {
   }
   double memory_usage() override;
   const SPHSoil::NeighbourList &neighbour_list() const { return neighbours; }
+  // soil particles behind the plane of a mirror wall they pair with, on all ranks (collective):
+  // a diagnosis of an instability
+  bigint soil_behind_walls() const;
   // whether the pair loop adds the artificial stress (known after init)
   bool artificial_stress_active() const { return has_artificial_stress; }
 
@@ -105,6 +108,7 @@ class PairSPHSoil : public Pair {
   void warn_coinciding();
   void warn_soil_in_rigid_bodies();
   void warn_geostatic_across_gravity();
+  void check_list_fits();
 
   // the loop (pair_sph_soil_loop.cpp). Per owned and ghost atom: the packed rows of its inputs
   // (soil_packed_rows.h), and its sums: force, density rate, the velocity gradient's sum

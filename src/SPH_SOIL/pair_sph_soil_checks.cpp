@@ -10,7 +10,10 @@
 #include "domain.h"
 #include "error.h"
 #include "soil_refine_split.h"
+#include "neighbor.h"
+#include "soil_kernels.h"
 #include "sph_soil_fixes.h"
+#include "sph_soil_memory.h"
 #include "sph_soil_offenders.h"
 #include "sph_soil_walls.h"
 
@@ -127,6 +130,34 @@ void PairSPHSoil::warn_soil_in_rigid_bodies()
 }
 
 /* ----------------------------------------------------------------------
+   the pair list's size from the largest h/d: each particle lists about half of those within
+   its support (2 h_ij + skin), about (pi or 4 pi / 3) / 2 ((support h + skin) / d)^D of them,
+   4 bytes each. An h far beyond the spacing that cannot fit stops here, naming h, rather than
+   in an allocation failure in the list's build.
+------------------------------------------------------------------------- */
+
+void PairSPHSoil::check_list_fits()
+{
+  const int *type = atom->type;
+  const double *h = avec->smoothing_length, *rho = atom->rho, *rmass = atom->rmass;
+  const int dimension = domain->dimension;
+  double worst = 0.0, worst_all = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (materials.has(type[i]))
+      worst = MAX(worst, h[i] / SPHSoil::volume_spacing(rmass[i] / rho[i], dimension));
+  MPI_Allreduce(&worst, &worst_all, 1, MPI_DOUBLE, MPI_MAX, world);
+  const double reach = SPHSoil::kernel_support(kernel) * worst_all * (1.0 + neighbor->skin / max_h);
+  const double partners = 0.5 * (dimension == 3 ? 4.18879 * reach * reach * reach : 3.14159 * reach * reach);
+  const double bytes = (double) atom->natoms * partners * sizeof(int);
+  const auto nodes = SPHSoilMemory::nodes(world);
+  if (nodes.bytes > 0.0 && bytes > nodes.bytes)
+    error->all(FLERR, "Pair sph/soil: h/d up to {:.3g} gives each particle about {:.3g} neighbours, "
+                      "{:.3g} GB for the pair list of {} particles, more than the {:.3g} GB of the "
+                      "node(s) of this run; h is usually 1.2 to 2 times the spacing d = (m/rho)^(1/{})",
+               worst_all, 2.0 * partners, bytes / 1e9, atom->natoms, nodes.bytes / 1e9, dimension);
+}
+
+/* ----------------------------------------------------------------------
    particles at the same place (created twice, or read twice): legal, the sums stay finite
    (the kernel gradient vanishes at r = 0), but most likely a mistake; warned once, at the
    first force evaluation, when the neighbour list exists
@@ -164,4 +195,14 @@ void PairSPHSoil::warn_coinciding()
                           "{} at {} {} {}): particles at the same place, created or read twice?",
                    at_same_place.count, at_same_place.first, (tagint) at_same_place.values[0],
                    at_same_place.values[1], at_same_place.values[2], at_same_place.values[3]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+bigint PairSPHSoil::soil_behind_walls() const
+{
+  const bigint mine = walls->soil_behind_planes(neighbours);
+  bigint all = 0;
+  MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  return all;
 }

@@ -86,8 +86,11 @@ bool SPHSoil::material_from_words(const std::string &name, const std::vector<std
     error = "material " + name + ": density rho0 = " + words[1] + " must be finite and > 0";
     return false;
   }
-  // a number where the model word goes: a line from before models had keywords
-  const bool named = words.size() > 2 && std::isalpha((unsigned char) words[2][0]);
+  // a number where the model word goes: a line from before models had keywords ('nan' and
+  // 'inf' are numbers, which the model then refuses as not finite, not unknown models)
+  double number;
+  const bool named = words.size() > 2 && std::isalpha((unsigned char) words[2][0]) &&
+      !parse_number(words[2], number);
   const std::string keyword = named ? words[2] : DEFAULT_MODEL;
   const std::vector<std::string> parameters(words.begin() + (named ? 3 : 2), words.end());
   std::unique_ptr<ConstitutiveModel> model = make_model(keyword, parameters, error);
@@ -103,7 +106,9 @@ bool SPHSoil::parse_material_file(const std::string &text, std::vector<SoilMater
                                   std::string &error)
 {
   materials.clear();
-  std::istringstream lines(text);
+  // a UTF-8 byte-order mark, which some editors write at the start of a file
+  const std::string bom = "\xEF\xBB\xBF";
+  std::istringstream lines(text.compare(0, bom.size(), bom) == 0 ? text.substr(bom.size()) : text);
   std::string line;
   int number = 0;
   while (std::getline(lines, line)) {

@@ -5,16 +5,36 @@
 
 #include "soil_mohr_coulomb.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 using namespace SPHSoil;
 
 /* ---------------------------------------------------------------------- */
 
-MohrCoulomb::MohrCoulomb(const FrictionalParameters &parameters) : params(parameters)
+std::string MohrCoulomb::check(const FrictionalParameters &parameters, double tension)
 {
-  const std::string problem = check(parameters);
+  const std::string problem = parameters.check();
+  if (!problem.empty()) return problem;
+  if (!(tension >= 0.0))
+    return "tension = " + format_number(tension) + ": the tensile strength must be >= 0 Pa";
+  const double sin_phi = std::sin(parameters.friction_angle * DEG2RAD);
+  if (tension < std::numeric_limits<double>::infinity() && sin_phi > 0.0) {
+    const double apex = parameters.cohesion * std::cos(parameters.friction_angle * DEG2RAD) / sin_phi;
+    if (tension > apex)
+      return "tension = " + format_number(tension) + ": the tensile strength must be in [0, " +
+          format_number(apex) + "] Pa, the apex c cot(phi) of this phi and c (the apex limits " +
+          "the tension already)";
+  }
+  return "";
+}
+
+MohrCoulomb::MohrCoulomb(const FrictionalParameters &parameters, double tension_cutoff) :
+    params(parameters), tension(tension_cutoff)
+{
+  const std::string problem = check(parameters, tension_cutoff);
   if (!problem.empty()) throw std::invalid_argument(std::string(KEYWORD) + " " + problem);
   bulk = params.bulk_modulus;
   shear = params.shear_modulus();
@@ -38,12 +58,25 @@ std::unique_ptr<ConstitutiveModel> MohrCoulomb::create(const std::vector<std::st
   FrictionalParameters parameters;
   std::vector<std::string> options;
   if (!FrictionalParameters::from_words(KEYWORD, words, parameters, options, error)) return nullptr;
-  if (!options.empty()) {
-    error = std::string(KEYWORD) + " takes " + std::to_string(FrictionalParameters::COUNT) +
-        " parameters (" + USAGE + ") and no options, got '" + options[0] + "'";
+  double tension = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < options.size(); k += 2) {
+    const std::string value = k + 1 < options.size() ? options[k + 1] : "";
+    if (options[k] != "tension") {
+      error = std::string(KEYWORD) + ": unknown option '" + options[k] + "' (allowed: tension)";
+      return nullptr;
+    }
+    if (!parse_finite_number(value, tension)) {
+      error = std::string(KEYWORD) + " tension '" + value +
+          "': the tensile strength must be a number (Pa), >= 0";
+      return nullptr;
+    }
+  }
+  const std::string problem = check(parameters, tension);
+  if (!problem.empty()) {
+    error = std::string(KEYWORD) + " " + problem;
     return nullptr;
   }
-  return std::unique_ptr<ConstitutiveModel>(new MohrCoulomb(parameters));
+  return std::unique_ptr<ConstitutiveModel>(new MohrCoulomb(parameters, tension));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -125,7 +158,13 @@ bool MohrCoulomb::return_to_admissible(double stress[6]) const
 {
   double values[3], vectors[3][3];
   principal_stresses(stress, values, vectors);
-  if (return_principal(values) == Return::none) return false;
+  bool returned = return_principal(values) != Return::none;
+  // the tension cut-off (descending: the largest first)
+  for (int k = 0; k < 3 && values[k] > tension; k++) {
+    values[k] = tension;
+    returned = true;
+  }
+  if (!returned) return false;
   for (int k = 0; k < 6; k++) stress[k] = 0.0;
   for (int k = 0; k < 3; k++)
     for (int m = 0; m < 6; m++)
@@ -139,7 +178,7 @@ double MohrCoulomb::yield_function(const double stress[6]) const
 {
   double values[3], vectors[3][3];
   principal_stresses(stress, values, vectors);
-  return 0.5 * yield_twice(values);
+  return std::max(0.5 * yield_twice(values), values[0] - tension);
 }
 
 bool MohrCoulomb::on_yield_surface(const double stress[6]) const
@@ -147,7 +186,9 @@ bool MohrCoulomb::on_yield_surface(const double stress[6]) const
   double s[3], vectors[3][3];
   principal_stresses(stress, s, vectors);
   const double scale = (s[0] - s[2]) + std::fabs(s[0] + s[2]) * sin_phi + cohesion_term;
-  return yield_twice(s) >= -YIELD_TOLERANCE * scale;
+  const bool at_cutoff = std::isfinite(tension) &&
+      s[0] - tension >= -YIELD_TOLERANCE * (std::fabs(s[0]) + tension);
+  return yield_twice(s) >= -YIELD_TOLERANCE * scale || at_cutoff;
 }
 
 // out-of-class definitions: C++11/14 need them when the constants are bound to a reference

@@ -17,9 +17,14 @@ std::string SPHSoil::format_number(double value)
   return out.str();
 }
 
-bool SPHSoil::parse_finite_number(const std::string &word, double &value)
+bool SPHSoil::parse_number(const std::string &word, double &value)
 {
   char *end = nullptr;
   value = std::strtod(word.c_str(), &end);
-  return !word.empty() && end && *end == '\0' && std::isfinite(value);
+  return !word.empty() && end && *end == '\0';
+}
+
+bool SPHSoil::parse_finite_number(const std::string &word, double &value)
+{
+  return parse_number(word, value) && std::isfinite(value);
 }

@@ -14,6 +14,8 @@ namespace SPHSoil {
 std::string format_number(double value);
 // a whole word as a finite number (the words of material lines); false if it is not one
 bool parse_finite_number(const std::string &word, double &value);
+// a whole word as a number, finite or not (nan, inf); false if it is not one
+bool parse_number(const std::string &word, double &value);
 
 }    // namespace SPHSoil
 

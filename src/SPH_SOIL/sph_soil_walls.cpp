@@ -324,3 +324,32 @@ double SPHSoilWalls::memory_usage() const
 {
   return (double) nmax * (XSUMS + WSTATE) * sizeof(double);
 }
+
+/* ----------------------------------------------------------------------
+   the soil particle's distance beyond the wall's plane, (x_s - x_w) . n - d_w, below zero
+------------------------------------------------------------------------- */
+
+bigint SPHSoilWalls::soil_behind_planes(const NeighbourList &list) const
+{
+  if (!has_mirror || !avec) return 0;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  double **x = atom->x;
+  const int *partners = list.partner_data();
+  // each pair is listed at one of its atoms: mark the owned soil particles found behind
+  std::vector<char> behind(nlocal, 0);
+  for (int i = 0; i < list.size() && i < nlocal; i++)
+    for (int jj = list.plain_end(i); jj < list.end(i); jj++) {
+      const int j = partners[jj];
+      const bool wall_i = kind_of_type[type[i]] == NEIGHBOUR_MIRROR_WALL;
+      const int s = wall_i ? j : i, w = wall_i ? i : j;
+      if (s >= nlocal) continue;
+      const double *n = avec->wall_normal[w];
+      const double beyond = (x[s][0] - x[w][0]) * n[0] + (x[s][1] - x[w][1]) * n[1] +
+          (x[s][2] - x[w][2]) * n[2] - avec->wall_distance[w];
+      if (beyond < 0.0) behind[s] = 1;
+    }
+  bigint count = 0;
+  for (char b : behind) count += b;
+  return count;
+}

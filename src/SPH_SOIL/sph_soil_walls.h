@@ -22,6 +22,7 @@
 #ifndef LMP_SPH_SOIL_WALLS_H
 #define LMP_SPH_SOIL_WALLS_H
 
+#include "lmptype.h"
 #include "pointers.h"
 #include "soil_kernels.h"
 #include "soil_material.h"
@@ -74,6 +75,8 @@ class SPHSoilWalls : protected Pointers {
   int pack_reverse_comm(int n, int first, double *buf);
   void unpack_reverse_comm(int n, int *list, double *buf);
   double memory_usage() const;
+  // owned soil particles beyond the plane of a mirror wall particle they pair with (this rank)
+  bigint soil_behind_planes(const SPHSoil::NeighbourList &list) const;
 
   // the extrapolation's own pass over the soil-wall pairs (public: with_kernel() calls it)
   template <int DIMENSION, class Kernel>
