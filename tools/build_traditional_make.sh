@@ -44,6 +44,8 @@ fi
 [ -f "$tree/src/Makefile" ] || { echo "build_traditional_make: $tree/src/Makefile not found" >&2; exit 1; }
 
 cd "$tree/src"
+# an earlier copy's files leave src/ first (files renamed since would otherwise stay behind)
+[ -d SPH_SOIL ] && make no-sph_soil > /dev/null
 rm -rf SPH_SOIL
 cp -r "$root/src/SPH_SOIL" .
 packages=(sph_soil rigid)

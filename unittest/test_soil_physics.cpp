@@ -318,7 +318,8 @@ ColumnResult SoilPhysics::geostatic_column(const std::vector<std::string> &wall_
     command("pair_coeff 1 1 soil 1850 drucker_prager 1.5e6 0.3 45 0 0 fit associated");
     command("pair_coeff 3 3 wall");
     for (const auto &line : wall_commands) command(line);
-    command("fix gravity soil gravity 9.81 vector 0 -1 0");
+    // (under an ID of its own: the walls find gravity by what the fix does)
+    command("fix down soil gravity 9.81 vector 0 -1 0");
     command("fix integrate soil sph/soil");
     command("timestep 1.0e-5");
     command("thermo 0");
