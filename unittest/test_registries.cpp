@@ -6,7 +6,7 @@
 #include "atom_vec_sph_soil.h"
 #include "compute_sph_soil_atom.h"
 #include "soil_models.h"
-#include "sph_soil_refine_criterion.h"
+#include "sph_soil_refine_criteria.h"
 
 #include <cmath>
 

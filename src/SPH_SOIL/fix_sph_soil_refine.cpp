@@ -21,7 +21,7 @@
 #include "soil_refine_split.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_input.h"
-#include "sph_soil_refine_criterion.h"
+#include "sph_soil_refine_selection.h"
 #include "sph_soil_memory.h"
 #include "sph_soil_refine_splitter.h"
 #include "update.h"

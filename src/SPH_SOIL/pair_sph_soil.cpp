@@ -286,6 +286,9 @@ void *PairSPHSoil::extract(const char *name, int &dim)
   if (strcmp(name, "viscosity_alpha") == 0) return (void *) &viscosity_alpha;
   if (strcmp(name, "viscosity_beta") == 0) return (void *) &viscosity_beta;
   if (strcmp(name, "viscosity_h0") == 0) return (void *) &viscosity_h0;
+  // for the package's own code (the refinement), which needs no more of the pair style
+  if (strcmp(name, "sph_soil_materials") == 0) return (void *) &materials;
+  if (strcmp(name, "sph_soil_kernel") == 0) return (void *) &kernel;
   return nullptr;
 }
 

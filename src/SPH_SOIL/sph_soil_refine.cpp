@@ -13,7 +13,7 @@
 #include "neighbor.h"
 #include "pair_sph_soil.h"
 #include "sph_soil_compat.h"
-#include "sph_soil_refine_criterion.h"
+#include "sph_soil_refine_selection.h"
 #include "sph_soil_refine_splitter.h"
 #include "utils.h"
 

@@ -13,7 +13,8 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
-#include "pair_sph_soil.h"
+#include "pair.h"
+#include "sph_soil_materials.h"
 #include "soil_constitutive.h"
 #include "soil_material.h"
 #include "soil_neighbours.h"
@@ -25,15 +26,13 @@
 using namespace LAMMPS_NS;
 using namespace SPHSoil;
 
-namespace {
-// interpolated state: density, stress (6), total strain (6)
-constexpr int NSTATE = 13;
-}    // namespace
+// (a definition for C++11, where LAMMPS 29Sep2021 compiles: the value is used by reference)
+constexpr int SPHSoilRefineSplitter::NSTATE;
 
 /* ---------------------------------------------------------------------- */
 
 SPHSoilRefineSplitter::SPHSoilRefineSplitter(LAMMPS *lmp, const std::string &who_) :
-    Pointers(lmp), who(who_), avec(nullptr), pair(nullptr)
+    Pointers(lmp), who(who_), avec(nullptr), materials(nullptr)
 {
 }
 
@@ -44,7 +43,7 @@ constexpr const char *SPHSoilRefineSplitter::KEYWORDS;
 
 SPHSoil::KernelKind SPHSoilRefineSplitter::kernel_kind() const
 {
-  return pair->kernel_kind();
+  return kernel;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -71,8 +70,11 @@ void SPHSoilRefineSplitter::init()
 {
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   if (!avec) error->all(FLERR, "{} requires atom_style sph/soil", who);
-  pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));
+  Pair *pair = force->pair_match("sph/soil", 1);
   if (!pair) error->all(FLERR, "{} requires pair_style sph/soil", who);
+  int dim;
+  materials = static_cast<const SPHSoilMaterials *>(pair->extract("sph_soil_materials", dim));
+  kernel = *static_cast<const SPHSoil::KernelKind *>(pair->extract("sph_soil_kernel", dim));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -85,7 +87,7 @@ double SPHSoilRefineSplitter::smoothing_length(int i) const
 double SPHSoilRefineSplitter::spacing(int i) const
 {
   if (reference_spacing > 0.0) return level_spacing(reference_spacing, avec->level[i]);
-  const double density = pair->material(atom->type[i]).density;
+  const double density = materials->of(atom->type[i]).density;
   return volume_spacing(atom->rmass[i] / density, domain->dimension);
 }
 
@@ -104,7 +106,7 @@ void SPHSoilRefineSplitter::interpolate(int parent, const double *position, cons
   const int *type = atom->type;
   const int itype = type[parent];
 
-  CspmSum<NSTATE> sum(pair->kernel_kind());
+  CspmSum<NSTATE> sum(kernel);
   near.for_each_near(position, reach, [&](int j) {
     if (type[j] != itype) return;
     const double dx = position[0] - x[j][0], dy = position[1] - x[j][1],
@@ -178,41 +180,65 @@ bigint SPHSoilRefineSplitter::split(const std::vector<int> &parents)
   const std::vector<tagint> first_tag = first_new_tags(parents, total);
   if (total == 0) return 0;
 
-  // the ghosts' state as of now (the strain does not travel every step)
+  Daughters daughters;
+  plan_daughters(parents, daughters);
+  stop_if_outside_box(parents, daughters);
+  add_daughters(parents, first_tag, daughters);
+
+  // global bookkeeping
+  bigint nlocal = atom->nlocal;
+  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->map_init();
+    atom->map_set();
+  }
+  return total;
+}
+
+/* ----------------------------------------------------------------------
+   every daughter's position and interpolated state, before anything changes: from the owned
+   and ghost atoms in cells of the largest support (the ghosts reach 2 max(h) + skin beyond the
+   subdomain), with the ghosts' state as of now (the strain does not travel every step)
+------------------------------------------------------------------------- */
+
+void SPHSoilRefineSplitter::plan_daughters(const std::vector<int> &parents, Daughters &daughters)
+{
   comm->forward_comm();
   comm->forward_comm_array(AtomVecSPHSoil::NVOIGT, avec->total_strain);
 
   const int dimension = domain->dimension;
   const int count = daughter_count(dimension);
   const int nparents = (int) parents.size();
-
-  // owned and ghost atoms in cells of the largest support: a daughter's state comes from the
-  // atoms within it (the ghosts reach 2 max(h) + skin beyond the subdomain)
   const int nall = atom->nlocal + atom->nghost;
   double max_h = 0.0;
   for (int i = 0; i < nall; i++) max_h = MAX(max_h, avec->smoothing_length[i]);
-  const double reach = kernel_support(pair->kernel_kind()) * max_h;
+  const double reach = kernel_support(kernel) * max_h;
   CellGrid near;
   near.build(atom->x, nall, dimension, reach);
 
-  // 1. every daughter's position and interpolated state, before anything changes
-  std::vector<double> position((size_t) nparents * count * 3), state((size_t) nparents * count * NSTATE);
+  daughters.count = count;
+  daughters.position.assign((size_t) nparents * count * 3, 0.0);
+  daughters.state.assign((size_t) nparents * count * NSTATE, 0.0);
   for (int n = 0; n < nparents; n++) {
     const int i = parents[n];
     double offsets[MAX_DAUGHTERS][3];
     daughter_offsets(dimension, separation, spacing(i), offsets);
     for (int k = 0; k < count; k++) {
-      double *xd = &position[((size_t) n * count + k) * 3];
+      double *xd = daughters.position_of(n, k);
       for (int a = 0; a < 3; a++) xd[a] = atom->x[i][a] + offsets[k][a];
-      interpolate(i, xd, near, reach, &state[((size_t) n * count + k) * NSTATE]);
+      interpolate(i, xd, near, reach, daughters.state_of(n, k));
     }
   }
+}
 
-  // a daughter beyond a fixed ('f') boundary would be lost at the next reneighbouring
+// a daughter beyond a fixed ('f') boundary would be lost at the next reneighbouring
+void SPHSoilRefineSplitter::stop_if_outside_box(const std::vector<int> &parents, Daughters &daughters)
+{
+  const int dimension = domain->dimension, count = daughters.count;
   std::vector<int> outside(atom->nlocal, -1);    // per parent: its first daughter outside
-  for (int n = 0; n < nparents; n++)
+  for (int n = 0; n < (int) parents.size(); n++)
     for (int k = 0; k < count && outside[parents[n]] < 0; k++) {
-      const double *xd = &position[((size_t) n * count + k) * 3];
+      const double *xd = daughters.position_of(n, k);
       for (int a = 0; a < dimension; a++)
         if ((domain->boundary[a][0] == 1 && xd[a] < domain->boxlo[a]) ||
             (domain->boundary[a][1] == 1 && xd[a] >= domain->boxhi[a]))
@@ -221,7 +247,7 @@ bigint SPHSoilRefineSplitter::split(const std::vector<int> &parents)
   const auto lost = SPHSoilOffenders::find_offenders(
       lmp, [&](int i) { return outside[i] >= 0; },
       [&](int i, double *values) {
-        for (int a = 0; a < 3; a++) values[a] = position[(size_t) outside[i] * 3 + a];
+        for (int a = 0; a < 3; a++) values[a] = daughters.position[(size_t) outside[i] * 3 + a];
       });
   if (lost)
     error->all(FLERR, "{}: splitting {} particle(s) would put daughters outside the box through a "
@@ -229,37 +255,22 @@ bigint SPHSoilRefineSplitter::split(const std::vector<int> &parents)
                       "separation * d_p / 2 away from fixed boundaries (e.g. with a region), or "
                       "make the boundary shrink-wrapped", who, lost.count, lost.first,
                lost.values[0], lost.values[1], lost.values[2]);
+}
 
-  // 2. the daughters: the parent's slot becomes daughter 0, the others are copies of the
-  //    parent appended to the owned atoms (overwriting the ghosts, which are rebuilt later)
+/* ----------------------------------------------------------------------
+   the daughters: the parent's slot becomes daughter 0, the others are copies of the parent
+   appended to the owned atoms (overwriting the ghosts, which are rebuilt later)
+------------------------------------------------------------------------- */
+
+void SPHSoilRefineSplitter::add_daughters(const std::vector<int> &parents,
+                                          const std::vector<tagint> &first_tag, Daughters &daughters)
+{
   atom->nghost = 0;
-  auto set_daughter = [&](int j, int n, int k, int parent_level, double parent_mass,
-                          double parent_h, const double *parent_force) {
-    const double *xd = &position[((size_t) n * count + k) * 3];
-    const double *sd = &state[((size_t) n * count + k) * NSTATE];
-    for (int a = 0; a < 3; a++) {
-      atom->x[j][a] = xd[a];
-      atom->f[j][a] = parent_force[a] / count;    // the parent's acceleration
-    }
-    atom->rmass[j] = parent_mass / count;
-    avec->smoothing_length[j] = smoothing_ratio * parent_h;
-    avec->level[j] = parent_level + 1;
-    atom->rho[j] = sd[0];
-    for (int c = 0; c < 6; c++) {
-      avec->stress[j][c] = sd[1 + c];
-      avec->total_strain[j][c] = sd[7 + c];
-    }
-    // a CSPM average of admissible stresses is admissible for one convex yield surface;
-    // the return guards against round-off
-    const auto model = pair->model(atom->type[j]);
-    if (model) model->return_to_admissible(avec->stress[j]);
-  };
-
-  for (int n = 0; n < nparents; n++) {
+  const int count = daughters.count;
+  for (int n = 0; n < (int) parents.size(); n++) {
     const int i = parents[n];
-    const int parent_level = avec->level[i];
-    const double parent_mass = atom->rmass[i], parent_h = avec->smoothing_length[i];
-    const double parent_force[3] = {atom->f[i][0], atom->f[i][1], atom->f[i][2]};
+    Parent parent{avec->level[i], atom->rmass[i], avec->smoothing_length[i],
+                  {atom->f[i][0], atom->f[i][1], atom->f[i][2]}};
     for (int k = 1; k < count; k++) {
       const int j = atom->nlocal;
       // through the atom style in use (under atom_style hybrid, the hybrid style): every
@@ -268,17 +279,29 @@ bigint SPHSoilRefineSplitter::split(const std::vector<int> &parents)
       atom->avec->copy(i, j, 0);
       atom->tag[j] = first_tag[n] + k - 1;
       atom->nlocal++;
-      set_daughter(j, n, k, parent_level, parent_mass, parent_h, parent_force);
+      set_daughter(j, parent, daughters.position_of(n, k), daughters.state_of(n, k), count);
     }
-    set_daughter(i, n, 0, parent_level, parent_mass, parent_h, parent_force);
+    set_daughter(i, parent, daughters.position_of(n, 0), daughters.state_of(n, 0), count);
   }
+}
 
-  // 3. global bookkeeping
-  bigint nlocal = atom->nlocal;
-  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (atom->map_style != Atom::MAP_NONE) {
-    atom->map_init();
-    atom->map_set();
+void SPHSoilRefineSplitter::set_daughter(int j, const Parent &parent, const double *position,
+                                         const double *state, int count)
+{
+  for (int a = 0; a < 3; a++) {
+    atom->x[j][a] = position[a];
+    atom->f[j][a] = parent.force[a] / count;    // the parent's acceleration
   }
-  return total;
+  atom->rmass[j] = parent.mass / count;
+  avec->smoothing_length[j] = smoothing_ratio * parent.h;
+  avec->level[j] = parent.level + 1;
+  atom->rho[j] = state[0];
+  for (int c = 0; c < 6; c++) {
+    avec->stress[j][c] = state[1 + c];
+    avec->total_strain[j][c] = state[7 + c];
+  }
+  // a CSPM average of admissible stresses is admissible for one convex yield surface; the
+  // return guards against round-off
+  const auto model = materials->model(atom->type[j]);
+  if (model) model->return_to_admissible(avec->stress[j]);
 }

@@ -16,6 +16,8 @@
 #include "soil_kernels.h"
 #include "soil_neighbours.h"
 
+#include "lmptype.h"
+
 #include <string>
 #include <vector>
 
@@ -58,11 +60,33 @@ class SPHSoilRefineSplitter : protected Pointers {
  private:
   std::string who;
   class AtomVecSPHSoil *avec;
-  class PairSPHSoil *pair;
+  // the pair style's materials and kernel (its extract(): the splitter needs no more of it)
+  const class SPHSoilMaterials *materials;
+  SPHSoil::KernelKind kernel;
   double smoothing_length(int i) const;
   void interpolate(int parent, const double *position, const SPHSoil::CellGrid &near, double reach,
                    double *state) const;
   std::vector<tagint> first_new_tags(const std::vector<int> &parents, bigint &total);
+
+  // the planned daughters of the parents: per parent n and daughter k, a position and the
+  // interpolated state (density, stress, total strain)
+  static constexpr int NSTATE = 13;
+  struct Daughters {
+    int count = 0;    // per parent
+    std::vector<double> position, state;
+    double *position_of(int n, int k) { return &position[((size_t) n * count + k) * 3]; }
+    double *state_of(int n, int k) { return &state[((size_t) n * count + k) * NSTATE]; }
+  };
+  struct Parent {
+    int level;
+    double mass, h, force[3];
+  };
+  void plan_daughters(const std::vector<int> &parents, Daughters &daughters);
+  void stop_if_outside_box(const std::vector<int> &parents, Daughters &daughters);
+  void add_daughters(const std::vector<int> &parents, const std::vector<tagint> &first_tag,
+                     Daughters &daughters);
+  void set_daughter(int j, const Parent &parent, const double *position, const double *state,
+                    int count);
 };
 
 }    // namespace LAMMPS_NS

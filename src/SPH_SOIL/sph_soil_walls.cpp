@@ -234,7 +234,15 @@ void SPHSoilWalls::extrapolate(double *packed, const NeighbourList &list)
     }
   }
   if (newton_pair) SPHSoilCompat::reverse_comm_pair(comm, owner);
+  extrapolated_states<DIMENSION>(packed);
+}
 
+// each owned extrapolated wall particle's state from its sums; to the ghosts; into the rows
+template <int DIMENSION> void SPHSoilWalls::extrapolated_states(double *packed)
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int *type = atom->type;
+  const int *kind = kind_of_type.data();
   double gravity[3];
   body_force(gravity);
   const double *rho = atom->rho;

@@ -103,6 +103,7 @@ class SPHSoilWalls : protected Pointers {
   int nmax;
   double *sums, *state;
   void body_force(double gravity[3]) const;
+  template <int DIMENSION> void extrapolated_states(double *packed);
 };
 
 }    // namespace LAMMPS_NS

@@ -3,10 +3,10 @@ import argparse
 import re
 
 from . import __doc__ as package_doc
-from . import examples, regression
+from . import examples, regression, structure
 from .studies import STUDIES
 
-COMMANDS = [examples, regression] + STUDIES
+COMMANDS = [examples, regression, structure] + STUDIES
 
 
 def summary(module):
