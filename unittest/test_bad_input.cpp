@@ -207,9 +207,15 @@ std::vector<BadInput> cases()
         "material of type(s) 1: drucker_prager parameter K: '1e400' is not a finite number");
   error("CoeffWallUnknownOption", "patch", {}, "pair_coeff 2 2 wall 3",
         "material of type(s) 2: unknown wall option '3' (allowed: noslip, freeslip, friction <mu>, "
-        "boundary mirror|extrapolate)");
+        "delta <degrees>, adhesion <c_a>, boundary mirror|extrapolate)");
   error("CoeffWallFriction", "patch", {}, "pair_coeff 2 2 wall friction -1",
         "material of type(s) 2: wall friction coefficient mu = -1 must be finite and >= 0");
+  error("CoeffWallFrictionNaN", "patch", {}, "pair_coeff 2 2 wall friction nan",
+        "material of type(s) 2: wall friction coefficient mu = nan must be finite and >= 0");
+  error("CoeffWallDelta", "patch", {}, "pair_coeff 2 2 wall delta -3",
+        "material of type(s) 2: wall delta friction angle (degrees) = -3 must be finite and in [0, 90)");
+  error("CoeffWallAdhesion", "patch", {}, "pair_coeff 2 2 wall delta 20 adhesion inf",
+        "material of type(s) 2: wall adhesion value c_a (stress units) = inf must be finite and >= 0");
   error("CoeffUnknownKind", "patch", {}, "pair_coeff 1 1 clay 2650 0.7e6 0.3 19.8 0 0",
         "Incorrect args for pair_coeff sph/soil: unknown material kind 'clay' for types 1 1 "
         "(allowed: soil, wall; a material file takes '* * file name1 ... name2')");
@@ -261,6 +267,10 @@ std::vector<BadInput> cases()
   error("RunExtrapolatedWallFreeSlip", "walls", {"pair_coeff 2 2 wall freeslip boundary extrapolate"},
         "run 0 post no",
         "Pair sph/soil: wall type 2 has boundary extrapolate with freeslip: an extrapolated wall is "
+        "no-slip (free slip and friction need the plane of 'boundary mirror')");
+  error("RunExtrapolatedWallFriction", "walls", {"pair_coeff 2 2 wall delta 20 boundary extrapolate"},
+        "run 0 post no",
+        "Pair sph/soil: wall type 2 has boundary extrapolate with friction: an extrapolated wall is "
         "no-slip (free slip and friction need the plane of 'boundary mirror')");
   error("RunTwoIntegrators", "walls", {"fix again soil sph/soil"}, "run 0 post no",
         "Fix sph/soil integrate and again both integrate 80 particle(s) (e.g. atom 21); integrate each "

@@ -121,10 +121,22 @@ TEST(MaterialFile, RejectsBadEntriesNamingLineModelAndParameter)
   rejects("a rock 1 2 3\n", "line 1: material a: unknown kind 'rock' (allowed: soil, wall)");
   rejects("w wall\nw wall\n", "line 2: material w is defined twice");
   rejects("w wall sticky\n", "line 1: material w: unknown wall option 'sticky' (allowed: noslip, "
-                             "freeslip, friction <mu>, boundary mirror|extrapolate)");
+                             "freeslip, friction <mu>, delta <degrees>, adhesion <c_a>, "
+                             "boundary mirror|extrapolate)");
   rejects("w wall friction\n", "line 1: material w: wall friction needs a coefficient mu >= 0");
   rejects("w wall friction -0.1\n",
           "line 1: material w: wall friction coefficient mu = -0.1 must be finite and >= 0");
+  rejects("w wall delta 90\n",
+          "line 1: material w: wall delta friction angle (degrees) = 90 must be finite and in [0, 90)");
+  rejects("w wall delta nan\n",
+          "line 1: material w: wall delta friction angle (degrees) = nan must be finite and in [0, 90)");
+  rejects("w wall friction 0.3 adhesion -5\n",
+          "line 1: material w: wall adhesion value c_a (stress units) = -5 must be finite and >= 0");
+  rejects("w wall friction 0.3 adhesion\n",
+          "line 1: material w: wall adhesion needs a value c_a (stress units) >= 0");
+  rejects("w wall noslip adhesion 100\n",
+          "line 1: material w: wall adhesion needs a frictional wall ('friction <mu>' or 'delta "
+          "<degrees>' before or after it)");
   rejects("w wall noslip freeslip\n", "line 1: material w: wall slip given twice ('freeslip')");
   rejects("w wall boundary\n",
           "line 1: material w: wall boundary needs a value (mirror or extrapolate)");

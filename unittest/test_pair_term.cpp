@@ -1,6 +1,7 @@
 // The pair term's pieces that are not covered by the LAMMPS-level tests: the mirrored stress of
-// a free-slip wall image.
+// a free-slip wall image, and the Coulomb interface of a frictional wall.
 #include "soil_pair_terms.h"
+#include "soil_wall_friction.h"
 #include "soil_wall_images.h"
 
 #include "gtest/gtest.h"
@@ -41,28 +42,116 @@ TEST(PairTerm, MirroredStressOfAFreeSlipWallHasNoShearTraction)
   EXPECT_NEAR(sum[0] + sum[1] + sum[2], 2.0 * (stress[0] + stress[1] + stress[2]), 1e-14);
 }
 
-// Coulomb friction between the two: mu = 0 is the free-slip sum, a large mu the no-slip sum
-// 2 sigma; in between, the sum's shear traction is the share lambda = mu |sigma_nn| / |sigma_nt|
-// of the no-slip one, so the traction of the image stress never exceeds mu times its normal part.
-TEST(PairTerm, FrictionalStressSumLiesBetweenFreeSlipAndNoSlip)
+// The Coulomb interface (soil_wall_friction.h), from a particle's contact sums: a wall of
+// normal y at rest, normal force N = 10 on a contact area 0.01 (pressure 1000), mu = 0.3 (limit
+// 3). Sticking, the trial force cancels the tangential force and the slip of the half step;
+// sliding, it is mu N against the trial's direction; mu = 0 gives nothing; a moving wall's
+// velocity is the reference of the slip.
+TEST(WallFriction, TrialForceStopsTheSlipAndCoulombBoundsIt)
 {
-  const double stress[6] = {-3.0, -5.0, -4.0, 1.5, 0.7, -0.9};
-  const double n[3] = {0.0, 1.0, 0.0};
-  double free_slip[6], sum[6];
-  mirrored_stress_sum(stress, n, free_slip);
-  EXPECT_EQ(frictional_stress_sum(stress, n, 0.0, sum), 0.0);
-  for (int k = 0; k < 6; k++) EXPECT_NEAR(sum[k], free_slip[k], 1e-15) << k;
-  EXPECT_EQ(frictional_stress_sum(stress, n, 10.0, sum), 1.0);
-  for (int k = 0; k < 6; k++) EXPECT_NEAR(sum[k], 2.0 * stress[k], 1e-15) << k;
+  const double normal[3] = {0.0, 1.0, 0.0}, at_rest[3] = {0.0, 0.0, 0.0};
+  double contact[CONTACT_SUMS] = {0.0};
+  // two partners, 4 and 6, of mu 0.3
+  add_contact(contact, 4.0, 0.3, normal, at_rest, 0.0, 0.004);
+  add_contact(contact, 6.0, 0.3, normal, at_rest, 0.0, 0.006);
+  EXPECT_DOUBLE_EQ(contact[C_NORMAL_FORCE], 10.0);
+  EXPECT_DOUBLE_EQ(contact[C_FRICTION], 3.0);
+  EXPECT_DOUBLE_EQ(contact[C_AREA], 0.01);
+  const double mass = 2.0, dt = 0.01, h = 0.01;
+  double ratio[3], pressure = NO_CONTACT;
 
-  // |sigma_nt| = |(1.5, -0.9)| = 1.749, sigma_nn = -5: mu = 0.2 lets through 1/1.749 of it
-  const double shear = std::hypot(1.5, 0.9), mu = 0.2;
-  const double share = frictional_stress_sum(stress, n, mu, sum);
-  EXPECT_NEAR(share, mu * 5.0 / shear, 1e-15);
-  EXPECT_NEAR(std::hypot(sum[3], sum[5]), mu * std::fabs(sum[1]), 1e-14);
-  EXPECT_NEAR(sum[4], 2.0 * stress[4], 1e-15);    // xz, in the wall's plane: untouched
-  // a soil pulling on the wall (sigma_nn > 0) transmits no shear
-  const double tension[6] = {1.0, 2.0, 1.0, 1.5, 0.0, 0.0};
-  EXPECT_EQ(frictional_stress_sum(tension, n, 0.5, sum), 0.0);
-  EXPECT_NEAR(sum[3], 0.0, 1e-15);
+  // sticking: tangential force 1 and a slip of 0.005 m/s: trial -1 - (2/0.01) 0.005 = -2
+  const double f[3] = {1.0, -10.0, 0.5}, v[3] = {0.005, 0.3, 0.0};
+  EXPECT_FALSE(contact_friction(contact, mass, f, v, h, 0.0, dt, pressure, ratio));
+  EXPECT_NEAR(ratio[0] * 10.0, -2.0, 1e-14);
+  EXPECT_NEAR(ratio[1], 0.0, 1e-15);    // nothing along the normal
+  EXPECT_NEAR(ratio[2] * 10.0, -0.5, 1e-14);
+  EXPECT_DOUBLE_EQ(pressure, 1000.0);    // sticking: the contact's pressure
+  // after it, the tangential velocity at the next half step is 0 (f constant)
+  EXPECT_NEAR(v[0] + dt * (f[0] + ratio[0] * 10.0) / mass, 0.0, 1e-15);
+
+  // sliding: a slip of 0.1 m/s, trial (-21, 0, -0.5), |T| = mu N = 3 along it
+  const double fast[3] = {0.1, 0.3, 0.0};
+  EXPECT_TRUE(contact_friction(contact, mass, f, fast, h, 0.0, dt, pressure, ratio));
+  const double trial = std::hypot(21.0, 0.5);
+  EXPECT_NEAR(ratio[0] * 10.0, -3.0 * 21.0 / trial, 1e-13);
+  EXPECT_NEAR(ratio[2] * 10.0, -3.0 * 0.5 / trial, 1e-13);
+
+  // mu = 0: no friction at all
+  double smooth[CONTACT_SUMS] = {0.0};
+  add_contact(smooth, 10.0, 0.0, normal, at_rest, 0.0, 0.01);
+  pressure = NO_CONTACT;
+  contact_friction(smooth, mass, f, fast, h, 0.0, dt, pressure, ratio);
+  for (int a = 0; a < 3; a++) EXPECT_EQ(ratio[a], 0.0);
+
+  // a wall moving with the soil at 0.1 m/s: no slip, the trial force is the tangential force's
+  double moving[CONTACT_SUMS] = {0.0};
+  const double wall_velocity[3] = {0.1, 0.0, 0.0};
+  add_contact(moving, 10.0, 0.3, normal, wall_velocity, 0.0, 0.01);
+  EXPECT_FALSE(contact_friction(moving, mass, f, fast, h, 0.0, dt, pressure, ratio));
+  EXPECT_NEAR(ratio[0] * 10.0, -1.0, 1e-13);
+
+  // no contact: no friction, and the state forgets the contact
+  double none[CONTACT_SUMS] = {0.0};
+  EXPECT_FALSE(contact_friction(none, mass, f, fast, h, 0.0, dt, pressure, ratio));
+  for (int a = 0; a < 3; a++) EXPECT_EQ(ratio[a], 0.0);
+  EXPECT_EQ(pressure, NO_CONTACT);
+}
+
+// Walls of two friction coefficients and an adhesion: the limit is the sum of each pair's
+// mu_b N_ab + c_b A_ab.
+TEST(WallFriction, LimitIsTheSumOfThePartnersLimits)
+{
+  const double normal[3] = {0.0, 1.0, 0.0}, at_rest[3] = {0.0, 0.0, 0.0};
+  double contact[CONTACT_SUMS] = {0.0};
+  add_contact(contact, 4.0, 0.5, normal, at_rest, 100.0, 0.004);
+  add_contact(contact, 6.0, 0.0, normal, at_rest, 0.0, 0.006);
+  const double f[3] = {0.0, 0.0, 0.0}, v[3] = {1.0, 0.0, 0.0};
+  double ratio[3], pressure = NO_CONTACT;
+  EXPECT_TRUE(contact_friction(contact, 1.0, f, v, 1.0, 0.0, 1.0e-3, pressure, ratio));
+  EXPECT_NEAR(ratio[0] * 10.0, -(2.0 + 0.4), 1e-14);
+}
+
+// The regularization: while a particle slides, the pressure that bounds its friction follows
+// the contact's over a slip of h (or a time of INTERFACE_RELAXATION h / c_p: c_p = 0 here); a
+// jump of the normal force doubles the limit only gradually (here a slip of 0.1 h per step:
+// 1 - 0.9^k of the jump after k steps); sticking resets it.
+TEST(WallFriction, InterfacePressureFollowsTheContactOverASlipOfH)
+{
+  const double normal[3] = {0.0, 1.0, 0.0}, at_rest[3] = {0.0, 0.0, 0.0};
+  const double f[3] = {0.0, 0.0, 0.0}, v[3] = {1.0, 0.0, 0.0};
+  const double dt = 1.0e-3, h = 0.01;    // |v| dt / h = 0.1
+  double ratio[3], pressure = NO_CONTACT;
+  double contact[CONTACT_SUMS] = {0.0};
+  add_contact(contact, 10.0, 0.5, normal, at_rest, 0.0, 0.01);
+  EXPECT_TRUE(contact_friction(contact, 1.0, f, v, h, 0.0, dt, pressure, ratio));
+  EXPECT_DOUBLE_EQ(pressure, 1000.0);
+  EXPECT_NEAR(ratio[0], -0.5, 1e-15);
+  // the normal force doubles
+  double doubled[CONTACT_SUMS] = {0.0};
+  add_contact(doubled, 20.0, 0.5, normal, at_rest, 0.0, 0.01);
+  for (int k = 1; k <= 3; k++) {
+    EXPECT_TRUE(contact_friction(doubled, 1.0, f, v, h, 0.0, dt, pressure, ratio));
+    const double expected = 2000.0 - 1000.0 * std::pow(0.9, k);
+    EXPECT_NEAR(pressure, expected, 1e-9) << k;
+    EXPECT_NEAR(ratio[0] * 20.0, -0.5 * expected * 0.01, 1e-12) << k;
+  }
+  // sticking (no slip, no force): the pressure is the contact's at once
+  const double still[3] = {0.0, 0.0, 0.0};
+  EXPECT_FALSE(contact_friction(doubled, 1.0, f, still, h, 0.0, dt, pressure, ratio));
+  EXPECT_DOUBLE_EQ(pressure, 2000.0);
+}
+
+// ... and at rest relative to the wall (a slow slip), over a time of INTERFACE_RELAXATION h / c_p.
+TEST(WallFriction, InterfacePressureFollowsTheContactOverTimeWithoutSlip)
+{
+  const double normal[3] = {0.0, 1.0, 0.0}, at_rest[3] = {0.0, 0.0, 0.0};
+  // a tangential force far above the limit, no slip yet: sliding, with |v_t| = 0
+  const double f[3] = {100.0, 0.0, 0.0}, v[3] = {0.0, 0.0, 0.0};
+  const double h = 0.01, c = 100.0, dt = 0.1 * INTERFACE_RELAXATION * h / c;    // 0.1 per step
+  double ratio[3], pressure = 1000.0;
+  double contact[CONTACT_SUMS] = {0.0};
+  add_contact(contact, 20.0, 0.5, normal, at_rest, 0.0, 0.01);
+  EXPECT_TRUE(contact_friction(contact, 1.0, f, v, h, c, dt, pressure, ratio));
+  EXPECT_NEAR(pressure, 1100.0, 1e-9);
 }

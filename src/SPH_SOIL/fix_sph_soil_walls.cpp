@@ -6,6 +6,7 @@
 
 #include "atom.h"
 #include "memory.h"
+#include "soil_wall_friction.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -14,21 +15,27 @@ using namespace FixConst;
 /* ---------------------------------------------------------------------- */
 
 FixSPHSoilWalls::FixSPHSoilWalls(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), accelerations(nullptr)
+    Fix(lmp, narg, arg), accelerations(nullptr), pressures(nullptr)
 {
+  restart_peratom = 1;
+  create_attribute = 1;
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nmax; i++) set_arrays(i);
 }
 
 FixSPHSoilWalls::~FixSPHSoilWalls()
 {
   atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
   memory->destroy(accelerations);
+  memory->destroy(pressures);
 }
 
 int FixSPHSoilWalls::setmask()
 {
-  return POST_INTEGRATE;
+  return POST_INTEGRATE | POST_FORCE;
 }
 
 /* ----------------------------------------------------------------------
@@ -38,6 +45,20 @@ int FixSPHSoilWalls::setmask()
 void FixSPHSoilWalls::init()
 {
   velocities_to_estimate(true);
+}
+
+/* ----------------------------------------------------------------------
+   after every other force of the step (the forces of the set-up's evaluation too)
+------------------------------------------------------------------------- */
+
+void FixSPHSoilWalls::setup(int vflag)
+{
+  post_force(vflag);
+}
+
+void FixSPHSoilWalls::post_force(int /*vflag*/)
+{
+  if (after_forces) after_forces();
 }
 
 /* ----------------------------------------------------------------------
@@ -70,26 +91,63 @@ void FixSPHSoilWalls::velocities_to_estimate(bool start)
 void FixSPHSoilWalls::grow_arrays(int nmax)
 {
   memory->grow(accelerations, nmax, 3, "SPH_SOIL_WALLS:accelerations");
+  memory->grow(pressures, nmax, "SPH_SOIL_WALLS:interface_pressures");
 }
 
 void FixSPHSoilWalls::copy_arrays(int i, int j, int /*delflag*/)
 {
   for (int k = 0; k < 3; k++) accelerations[j][k] = accelerations[i][k];
+  pressures[j] = pressures[i];
+}
+
+// a new atom: at rest, no contact yet
+void FixSPHSoilWalls::set_arrays(int i)
+{
+  for (int k = 0; k < 3; k++) accelerations[i][k] = 0.0;
+  pressures[i] = SPHSoil::NO_CONTACT;
 }
 
 int FixSPHSoilWalls::pack_exchange(int i, double *buf)
 {
   for (int k = 0; k < 3; k++) buf[k] = accelerations[i][k];
-  return 3;
+  buf[3] = pressures[i];
+  return 4;
 }
 
 int FixSPHSoilWalls::unpack_exchange(int nlocal, double *buf)
 {
   for (int k = 0; k < 3; k++) accelerations[nlocal][k] = buf[k];
-  return 3;
+  pressures[nlocal] = buf[3];
+  return 4;
+}
+
+// restart files: the interface pressure (the accelerations start at 0 in every run)
+int FixSPHSoilWalls::pack_restart(int i, double *buf)
+{
+  buf[0] = 2;
+  buf[1] = pressures[i];
+  return 2;
+}
+
+void FixSPHSoilWalls::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  pressures[nlocal] = extra[nlocal][m + 1];
+}
+
+int FixSPHSoilWalls::maxsize_restart()
+{
+  return 2;
+}
+
+int FixSPHSoilWalls::size_restart(int /*nlocal*/)
+{
+  return 2;
 }
 
 double FixSPHSoilWalls::memory_usage()
 {
-  return (double) atom->nmax * 3 * sizeof(double);
+  return (double) atom->nmax * 4 * sizeof(double);
 }

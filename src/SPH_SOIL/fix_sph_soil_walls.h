@@ -9,6 +9,11 @@
    acceleration over the last step, (v(t) - v(t - dt)) / dt, is kept for the
    walls that extrapolate the soil's stress (the inertia of a moving wall);
    0 at the start of a run. The acceleration travels with the atom.
+
+   With frictional walls, the walls unit also hands it what must run after
+   every force of the step (set_after_forces(): the Coulomb interface's
+   friction forces), which it calls at post_force; the walls unit keeps it the
+   last fix that adds forces.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -22,6 +27,7 @@ FixStyle(SPH_SOIL_WALLS,FixSPHSoilWalls);
 
 #include "fix.h"
 
+#include <functional>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -33,21 +39,34 @@ class FixSPHSoilWalls : public Fix {
   int setmask() override;
   void init() override;
   void post_integrate() override;
+  void setup(int) override;
+  void post_force(int) override;
 
   // which atom types are walls (non-zero), index 0..ntypes
   void set_wall_types(const std::vector<int> &wall_of_type) { is_wall_type = wall_of_type; }
+  // what runs after every other force of the step (nothing if empty)
+  void set_after_forces(std::function<void()> work) { after_forces = std::move(work); }
   // the acceleration of owned wall particle i over the last step
   const double *acceleration(int i) const { return accelerations[i]; }
+  // per atom: the interface pressure of a frictional wall's contact (SPHSoil::NO_CONTACT: none)
+  double *interface_pressures() { return pressures; }
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int maxsize_restart() override;
+  int size_restart(int) override;
   double memory_usage() override;
 
  private:
   std::vector<int> is_wall_type;
   double **accelerations;
+  double *pressures;
+  std::function<void()> after_forces;
   void velocities_to_estimate(bool start);
 };
 

@@ -34,7 +34,7 @@ constexpr int PairSPHSoil::RESTART_FORMAT;
 
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     Pair(lmp), has_artificial_stress(false), materials(lmp),
-    walls(new SPHSoilWalls(lmp, this, instance_me)), sound_speed_ij(nullptr), max_h(0.0), avec(nullptr),
+    walls(new SPHSoilWalls(lmp, this)), sound_speed_ij(nullptr), max_h(0.0), avec(nullptr),
     warned_density(false), warned_spacing(false), warned_coinciding(false), nmax_packed(0),
     packed(nullptr), sums(nullptr), nmax_artificial(0), artificial(nullptr), skin_fix(nullptr)
 {

@@ -15,6 +15,7 @@
 #include "soil_pair_terms.h"
 #include "soil_refine_split.h"
 #include "soil_wall_images.h"
+#include "sph_soil_wall_friction.h"
 #include "sph_soil_walls.h"
 
 #include <algorithm>
@@ -212,15 +213,29 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   double separation[3] = {0.0, 0.0, 0.0};
   for (int a = 0; a < D; a++) separation[a] = sign * dx[a];
   SPHSoil::MirrorImage image;
-  SPHSoil::mirror_image<D>(ps, pw, normal, wall_distance, separation, walls->slips()[wall_type],
-                           walls->frictions()[wall_type], image);
+  const int slip = walls->slips()[wall_type];
+  SPHSoil::mirror_image<D>(ps, pw, normal, wall_distance, separation, slip, image);
   const double rhos = ps[P_RHO];
   const double viscosity_h =
       SPHSoil::viscosity_length(viscosity_h0, SPHSoil::viscosity_h_weight(viscosity_h0), hij);
   SPHSoil::PairTerms<D> terms;
   SPHSoil::pair_terms<D>(separation, r2, hij, viscosity_h, factor, image.dv, image.approach,
-                         image.viscous_approach, image.stress_sum, rhos, c_ij, viscosity_alpha,
+                         image.approach, image.stress_sum, rhos, c_ij, viscosity_alpha,
                          viscosity_beta, terms);
+  // a smooth or frictional wall pushes along its normal only, and never pulls (an interface
+  // carries no tension: a soil in tension comes off it); a frictional wall's pushing pairs go
+  // to the interface, which adds the friction after all forces of the step (doc/theory.rst 4.4)
+  if (slip != SPHSoil::SLIP_NONE) {
+    const double push = SPHSoil::pushing_part<D>(terms.force, normal);
+    if (slip == SPHSoil::SLIP_FRICTION && push > 0.0) {
+      double normal_separation = 0.0;
+      for (int a = 0; a < D; a++) normal_separation += separation[a] * normal[a];
+      const double area = SPHSoil::contact_area(ps[P_VOLUME], pw[P_MASS] / rhos, factor, normal_separation);
+      walls->interface()->add_pair(soil, wall, ps[P_MASS] * pw[P_MASS] * push,
+                                   walls->frictions()[wall_type], normal, pw + P_V,
+                                   walls->adhesions()[wall_type], area, update_soil, update_wall);
+    }
+  }
 
   const double mw = pw[P_MASS], mass_product = ps[P_MASS] * mw;
   if (VIRIAL)

@@ -7,20 +7,45 @@
 #include "soil_models.h"
 
 #include <cctype>
+#include <cmath>
 #include <sstream>
 
 using namespace SPHSoil;
 
-// wall [noslip | freeslip | friction mu] [boundary mirror | extrapolate], in any order
+// the value after words[k] as a finite number in [low, high) (high < 0: no upper bound)
+static bool wall_number(const std::string &name, const std::vector<std::string> &words, size_t &k,
+                        const char *what, double low, double high, double &value,
+                        std::string &error)
+{
+  const std::string &word = words[k];
+  const std::string range = high < 0.0 ? ">= " + format_number(low)
+                                       : "in [" + format_number(low) + ", " + format_number(high) + ")";
+  if (k + 1 >= words.size()) {
+    error = "material " + name + ": wall " + word + " needs " + what + " " + range;
+    return false;
+  }
+  const std::string &text = words[++k];
+  std::string bare = what;    // "a coefficient mu" -> "coefficient mu"
+  if (bare.rfind("a ", 0) == 0) bare = bare.substr(2);
+  if (!parse_finite_number(text, value) || value < low || (high >= 0.0 && value >= high)) {
+    error = "material " + name + ": wall " + word + " " + bare + " = " + text +
+        " must be finite and " + range;
+    return false;
+  }
+  return true;
+}
+
+// wall [noslip | freeslip | friction mu | delta degrees] [adhesion c_a]
+//      [boundary mirror | extrapolate], in any order
 static bool wall_from_words(const std::string &name, const std::vector<std::string> &words,
                             SoilMaterial &material, std::string &error)
 {
-  const std::string usage =
-      "(allowed: noslip, freeslip, friction <mu>, boundary mirror|extrapolate)";
-  bool slip_given = false, boundary_given = false;
+  const std::string usage = "(allowed: noslip, freeslip, friction <mu>, delta <degrees>, "
+                            "adhesion <c_a>, boundary mirror|extrapolate)";
+  bool slip_given = false, boundary_given = false, adhesion_given = false;
   for (size_t k = 1; k < words.size(); k++) {
     const std::string &word = words[k];
-    if (word == "noslip" || word == "freeslip" || word == "friction") {
+    if (word == "noslip" || word == "freeslip" || word == "friction" || word == "delta") {
       if (slip_given) {
         error = "material " + name + ": wall slip given twice ('" + word + "')";
         return false;
@@ -29,17 +54,19 @@ static bool wall_from_words(const std::string &name, const std::vector<std::stri
       material.slip = word == "noslip" ? WallSlip::noslip
           : word == "freeslip"         ? WallSlip::freeslip
                                        : WallSlip::friction;
-      if (material.slip != WallSlip::friction) continue;
-      if (k + 1 >= words.size()) {
-        error = "material " + name + ": wall friction needs a coefficient mu >= 0";
-        return false;
+      if (word == "friction") {
+        if (!wall_number(name, words, k, "a coefficient mu", 0.0, -1.0, material.friction, error))
+          return false;
+      } else if (word == "delta") {
+        double degrees = 0.0;
+        if (!wall_number(name, words, k, "a friction angle (degrees)", 0.0, 90.0, degrees, error))
+          return false;
+        material.friction = std::tan(degrees * 3.14159265358979323846 / 180.0);
       }
-      const std::string &value = words[++k];
-      if (!parse_finite_number(value, material.friction) || material.friction < 0.0) {
-        error = "material " + name + ": wall friction coefficient mu = " + value +
-            " must be finite and >= 0";
+    } else if (word == "adhesion") {
+      adhesion_given = true;
+      if (!wall_number(name, words, k, "a value c_a (stress units)", 0.0, -1.0, material.adhesion, error))
         return false;
-      }
     } else if (word == "boundary") {
       if (boundary_given || k + 1 >= words.size()) {
         error = "material " + name + ": wall boundary " +
@@ -58,6 +85,11 @@ static bool wall_from_words(const std::string &name, const std::vector<std::stri
       error = "material " + name + ": unknown wall option '" + word + "' " + usage;
       return false;
     }
+  }
+  if (adhesion_given && material.slip != WallSlip::friction) {
+    error = "material " + name + ": wall adhesion needs a frictional wall ('friction <mu>' or "
+                                 "'delta <degrees>' before or after it)";
+    return false;
   }
   return true;
 }

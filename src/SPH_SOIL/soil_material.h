@@ -37,6 +37,7 @@ struct SoilMaterial {
   std::shared_ptr<const ConstitutiveModel> model;     // nullptr for a wall
   WallSlip slip = WallSlip::pair_default;             // walls only
   double friction = 0.0;                              // Coulomb coefficient, WallSlip::friction
+  double adhesion = 0.0;                              // c_a (Pa), WallSlip::friction
   WallBoundary boundary = WallBoundary::mirror;       // walls only
   // the words that defined it (after its name): material_from_words(name, words) builds it
   // again, e.g. from a restart file

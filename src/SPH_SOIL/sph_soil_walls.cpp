@@ -19,6 +19,7 @@
 #include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
 #include "sph_soil_offenders.h"
+#include "sph_soil_wall_friction.h"
 
 #include <cmath>
 #include <cstring>
@@ -28,15 +29,18 @@ using namespace SPHSoil;
 
 /* ---------------------------------------------------------------------- */
 
-SPHSoilWalls::SPHSoilWalls(LAMMPS *lmp, Pair *owner_, int instance) :
+SPHSoilWalls::SPHSoilWalls(LAMMPS *lmp, Pair *owner_) :
     Pointers(lmp), owner(owner_), avec(nullptr), has_mirror(false), has_extrapolated(false),
-    may_turn(false), kinematics(nullptr), nmax(0), sums(nullptr), state(nullptr)
+    has_friction(false), friction(nullptr), friction_exchange(false), may_turn(false), kinematics(nullptr), nmax(0), sums(nullptr), state(nullptr)
 {
-  kinematics_id = "SPH_SOIL_WALLS_" + std::to_string(instance);
+  // one ID for every instance of the pair style, so that the fix finds its per-atom state
+  // (the interface pressures) in a restart file whatever pair style instance wrote it
+  kinematics_id = "SPH_SOIL_WALLS";
 }
 
 SPHSoilWalls::~SPHSoilWalls()
 {
+  delete friction;
   memory->destroy(sums);
   memory->destroy(state);
   if (modify && modify->find_fix(kinematics_id) >= 0) modify->delete_fix(kinematics_id);
@@ -53,7 +57,8 @@ void SPHSoilWalls::classify(const std::vector<SoilMaterial> &materials,
   kind_of_type.assign(ntypes + 1, NEIGHBOUR_SOIL);
   slip_of_type.assign(ntypes + 1, SLIP_NONE);
   friction_of_type.assign(ntypes + 1, 0.0);
-  has_mirror = has_extrapolated = false;
+  adhesion_of_type.assign(ntypes + 1, 0.0);
+  has_mirror = has_extrapolated = has_friction = false;
   for (int t = 1; t <= ntypes; t++) {
     const SoilMaterial &m = materials[t];
     if (!has_material[t] || !m.is_wall()) continue;
@@ -73,7 +78,30 @@ void SPHSoilWalls::classify(const std::vector<SoilMaterial> &materials,
         : slip == WallSlip::freeslip           ? SLIP_FREE
                                                : SLIP_FRICTION;
     friction_of_type[t] = m.friction;
+    adhesion_of_type[t] = m.adhesion;
+    has_friction = has_friction || slip == WallSlip::friction;
   }
+  if (has_friction && !friction) friction = new SPHSoilWallFriction(lmp, owner);
+  if (friction) {
+    std::vector<double> speeds(ntypes + 1, 0.0);
+    for (int t = 1; t <= ntypes; t++)
+      if (has_material[t]) speeds[t] = materials[t].wave_speed();
+    friction->set_wave_speeds(speeds);
+  }
+  if (!has_friction) {
+    delete friction;
+    friction = nullptr;
+  }
+}
+
+int SPHSoilWalls::forward_size() const
+{
+  return WSTATE > SPHSoilWallFriction::FORWARD_SIZE ? WSTATE : SPHSoilWallFriction::FORWARD_SIZE;
+}
+
+int SPHSoilWalls::reverse_size() const
+{
+  return XSUMS > SPHSoilWallFriction::REVERSE_SIZE ? XSUMS : SPHSoilWallFriction::REVERSE_SIZE;
 }
 
 /* ----------------------------------------------------------------------
@@ -140,16 +168,34 @@ void SPHSoilWalls::init()
   if (any()) create_kinematics();
 }
 
-// the kinematics fix, created once (pair_granular creates its history fix the same way)
+// The kinematics fix, created once (pair_granular creates its history fix the same way). With
+// frictional walls it applies the interface's forces at post_force, after every other fix's:
+// it is created again at the end of the list of fixes if a fix that adds forces came after it.
 void SPHSoilWalls::create_kinematics()
 {
-  if (modify->find_fix(kinematics_id) < 0)
-    modify->add_fix(kinematics_id + " all SPH_SOIL_WALLS");
+  int index = modify->find_fix(kinematics_id);
+  if (index >= 0 && has_friction)
+    for (int k = index + 1; k < modify->nfix; k++)
+      if (modify->fmask[k] & FixConst::POST_FORCE) {
+        modify->delete_fix(kinematics_id);
+        index = -1;
+        break;
+      }
+  if (index < 0) modify->add_fix(kinematics_id + " all SPH_SOIL_WALLS");
   kinematics = dynamic_cast<FixSPHSoilWalls *>(modify->fix[modify->find_fix(kinematics_id)]);
   if (!kinematics) error->all(FLERR, "Pair sph/soil: fix {} is not the walls' kinematics", kinematics_id);
   std::vector<int> wall_of_type(kind_of_type.size());
   for (size_t t = 0; t < kind_of_type.size(); t++) wall_of_type[t] = kind_of_type[t] != NEIGHBOUR_SOIL;
   kinematics->set_wall_types(wall_of_type);
+  if (friction) {
+    kinematics->set_after_forces([this]() {
+      friction_exchange = true;
+      friction->apply(kinematics->interface_pressures());
+      friction_exchange = false;
+    });
+  } else {
+    kinematics->set_after_forces(nullptr);
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -171,6 +217,7 @@ struct Extrapolate {
 void SPHSoilWalls::prepare(double *packed, const NeighbourList &list, KernelKind kernel, int dimension)
 {
   if (may_turn) comm->forward_comm_array(4, atom->mu);
+  if (friction) friction->begin_step();
   if (has_extrapolated) with_kernel(kernel, Extrapolate{this, packed, list, dimension});
 }
 
@@ -300,6 +347,7 @@ void SPHSoilWalls::body_force(double gravity[3]) const
 
 int SPHSoilWalls::pack_reverse_comm(int n, int first, double *buf)
 {
+  if (friction_exchange) return friction->pack_reverse_comm(n, first, buf);
   int m = 0;
   for (int i = first; i < first + n; i++)
     for (int k = 0; k < XSUMS; k++) buf[m++] = sums[(size_t) i * XSUMS + k];
@@ -308,6 +356,10 @@ int SPHSoilWalls::pack_reverse_comm(int n, int first, double *buf)
 
 void SPHSoilWalls::unpack_reverse_comm(int n, int *list, double *buf)
 {
+  if (friction_exchange) {
+    friction->unpack_reverse_comm(n, list, buf);
+    return;
+  }
   int m = 0;
   for (int k = 0; k < n; k++)
     for (int c = 0; c < XSUMS; c++) sums[(size_t) list[k] * XSUMS + c] += buf[m++];
@@ -315,6 +367,7 @@ void SPHSoilWalls::unpack_reverse_comm(int n, int *list, double *buf)
 
 int SPHSoilWalls::pack_forward_comm(int n, int *list, double *buf)
 {
+  if (friction_exchange) return friction->pack_forward_comm(n, list, buf);
   int m = 0;
   for (int k = 0; k < n; k++)
     for (int c = 0; c < WSTATE; c++) buf[m++] = state[(size_t) list[k] * WSTATE + c];
@@ -323,6 +376,10 @@ int SPHSoilWalls::pack_forward_comm(int n, int *list, double *buf)
 
 void SPHSoilWalls::unpack_forward_comm(int n, int first, double *buf)
 {
+  if (friction_exchange) {
+    friction->unpack_forward_comm(n, first, buf);
+    return;
+  }
   int m = 0;
   for (int i = first; i < first + n; i++)
     for (int c = 0; c < WSTATE; c++) state[(size_t) i * WSTATE + c] = buf[m++];
@@ -330,7 +387,7 @@ void SPHSoilWalls::unpack_forward_comm(int n, int first, double *buf)
 
 double SPHSoilWalls::memory_usage() const
 {
-  return (double) nmax * (XSUMS + WSTATE) * sizeof(double);
+  return (double) nmax * (XSUMS + WSTATE) * sizeof(double) + (friction ? friction->memory_usage() : 0.0);
 }
 
 /* ----------------------------------------------------------------------

@@ -13,7 +13,9 @@
    - the boundaries: mirror images (soil_wall_images.h, applied in the pair
      loop) and walls that extrapolate the soil's state (Adami, Hu & Adams 2012;
      doc/theory.rst 4.5), with their own communication, which the pair style's
-     pack/unpack functions hand on to this unit.
+     pack/unpack functions hand on to this unit;
+   - the Coulomb interface of frictional walls (sph_soil_wall_friction.h), whose
+     friction forces the internal fix applies after every other force of the step.
    A new wall boundary is a kind here (NeighbourKind, for the pair list's
    order), its state before the loop (prepare()) and, if its pairs are not
    plain SPH pairs, its image in the loop.
@@ -35,9 +37,8 @@ namespace LAMMPS_NS {
 
 class SPHSoilWalls : protected Pointers {
  public:
-  // `owner` is the pair style whose communication carries the extrapolated walls' data;
-  // `instance` names the internal fix (one per pair style instance)
-  SPHSoilWalls(class LAMMPS *, class Pair *owner, int instance);
+  // `owner` is the pair style whose communication carries the extrapolated walls' data
+  SPHSoilWalls(class LAMMPS *, class Pair *owner);
   ~SPHSoilWalls() override;
 
   // per-type classification, from the materials of the types that have one (materials[t] is a
@@ -60,6 +61,7 @@ class SPHSoilWalls : protected Pointers {
   // the slip (SPHSoil::WallSlipCode) and friction coefficient of a mirror wall type
   const int *slips() const { return slip_of_type.data(); }
   const double *frictions() const { return friction_of_type.data(); }
+  const double *adhesions() const { return adhesion_of_type.data(); }
 
   // before the pair loop, with the loop's packed rows (soil_packed_rows.h) of the owned and
   // ghost atoms and the pair list: turned normals to the ghosts; the extrapolated walls' state
@@ -67,9 +69,14 @@ class SPHSoilWalls : protected Pointers {
   void prepare(double *packed, const SPHSoil::NeighbourList &list, SPHSoil::KernelKind kernel,
                int dimension);
 
-  // the extrapolated walls' communication, handed on by the pair style
-  int forward_size() const { return WSTATE; }
-  int reverse_size() const { return XSUMS; }
+  // the Coulomb interface of frictional walls (sph_soil_wall_friction.h), nullptr if none;
+  // the pair loop adds its pairs to it
+  class SPHSoilWallFriction *interface() const { return friction; }
+
+  // the communication of the extrapolated walls and of the interface, handed on by the pair
+  // style (the larger of their sizes)
+  int forward_size() const;
+  int reverse_size() const;
   int pack_forward_comm(int n, int *list, double *buf);
   void unpack_forward_comm(int n, int first, double *buf);
   int pack_reverse_comm(int n, int first, double *buf);
@@ -86,8 +93,10 @@ class SPHSoilWalls : protected Pointers {
   class Pair *owner;
   class AtomVecSPHSoil *avec;
   std::vector<int> kind_of_type, slip_of_type;
-  std::vector<double> friction_of_type;
-  bool has_mirror, has_extrapolated;
+  std::vector<double> friction_of_type, adhesion_of_type;
+  bool has_mirror, has_extrapolated, has_friction;
+  class SPHSoilWallFriction *friction;
+  bool friction_exchange;    // the communication in progress is the interface's
   bool may_turn;    // mirror walls and a fix that may turn them: their normals go to the
                     // ghosts every step
   std::vector<class Fix *> gravity_fixes;    // their 'gvec': the soil's body force

@@ -3,13 +3,14 @@ draws. Each has COMMAND (its name on the command line), add_arguments(parser) an
 study of one example also has report_example(directory, log, variables, seconds), which
 tools/run_example.sh calls on the example's single run to leave its plot and numbers beside it."""
 from . import (aluminium_bars, atom_style, bearing_capacity, footing, gate, refine_map, refinement,
-               retaining_wall, soil_collapse, strength_reduction, vertical_cut)
+               retaining_wall, sliding_block, soil_collapse, strength_reduction, vertical_cut)
 
 STUDIES = [aluminium_bars, atom_style, bearing_capacity, footing, gate, refinement, refine_map,
-           retaining_wall, soil_collapse, strength_reduction, vertical_cut]
+           retaining_wall, sliding_block, soil_collapse, strength_reduction, vertical_cut]
 
 # example (examples/NAME/in.NAME) -> the study that measures and plots its single run
 EXAMPLE_REPORTS = {'aluminium_bars': aluminium_bars, 'atom_style': atom_style,
                    'bearing_capacity': bearing_capacity, 'footing': footing, 'gate': gate,
-                   'refinement': refinement, 'retaining_wall': retaining_wall, 'slope': strength_reduction,
+                   'refinement': refinement, 'retaining_wall': retaining_wall, 'sliding_block': sliding_block,
+                   'slope': strength_reduction,
                    'soil_collapse': soil_collapse, 'vertical_cut': vertical_cut}

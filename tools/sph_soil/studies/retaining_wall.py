@@ -27,8 +27,22 @@ COMMAND = 'retaining-wall'
 
 
 def read(path):
+    """displacement, K and the vertical force's K (None in files without it)."""
     data = read_ave_time(path)
-    return data[:, 2], data[:, 4]    # displacement, K
+    return data[:, 2], data[:, 4], (data[:, 6] if data.shape[1] > 6 else None)
+
+
+def lancellotta(phi_deg, delta_deg):
+    """Lancellotta's (2002, Geotechnique 52:617) lower bound of the passive coefficient of the
+    normal (for a vertical wall: horizontal) force, vertical wall, horizontal backfill:
+        K_p = cos(delta) / (1 - sin(phi)) (cos(delta) + sqrt(sin^2 phi - sin^2 delta)) exp(2 theta tan phi),
+        2 theta = asin(sin(delta) / sin(phi)) + delta
+    (4.63 at phi = 30, delta = 20; Rankine's Kp for delta = 0)."""
+    phi, delta = math.radians(phi_deg), math.radians(delta_deg)
+    two_theta = math.asin(math.sin(delta) / math.sin(phi)) + delta
+    return (math.cos(delta) / (1.0 - math.sin(phi)) *
+            (math.cos(delta) + math.sqrt(math.sin(phi) ** 2 - math.sin(delta) ** 2)) *
+            math.exp(two_theta * math.tan(phi)))
 
 
 def limit(phi_deg, delta_deg, passive):
@@ -51,7 +65,7 @@ def earth_pressure(runs, phi=30.0, height=1.0, json_path=None, plot=None):
         if '@' in path:
             path, delta = path.rsplit('@', 1)
             delta = float(delta)
-        shift, k = read(path)
+        shift, k, kv = read(path)
         travel = shift[np.argmax(np.abs(shift))]
         passive = travel < 0.0
         rest = k[shift == 0.0]
@@ -65,6 +79,16 @@ def earth_pressure(runs, phi=30.0, height=1.0, json_path=None, plot=None):
              'limit': ('Rankine' if delta == 0.0 else 'Coulomb') + (' Kp' if passive else ' Ka'),
              'final_over_limit': float(final.mean() / reference),
              'travel_over_H': float(abs(travel) / height)}
+        # the force settles: its swing (max - min over mean) over the last 20% of the travel
+        last = k[np.abs(shift) >= 0.8 * abs(travel)] if travel != 0.0 else k[-1:]
+        r['swing_last_20_percent'] = float((last.max() - last.min()) / abs(last.mean()))
+        if kv is not None:
+            tail = np.abs(shift) >= 0.9 * abs(travel)
+            r['vertical_over_horizontal'] = float(np.mean(np.abs(kv[tail]) / np.abs(k[tail])))
+            r['tan_delta'] = math.tan(math.radians(delta))
+        if passive and delta > 0.0:
+            r['lancellotta_lower_bound'] = lancellotta(phi, delta)
+            r['final_over_lancellotta'] = float(final.mean() / r['lancellotta_lower_bound'])
         result['runs'][label] = r
         moved = shift != 0.0
         curves.append((label, np.abs(shift[moved]) / height, k[moved], r))
