@@ -157,3 +157,35 @@ TEST_F(Parallel, RefinementWithMigrationAndBalancing)
                            "fix balance all balance 100 1.0 shift xy 10 1.0", "thermo 0",
                            "run 1500 post no"});
 }
+
+// A block sliding on a frictional floor (the Coulomb interface with its communication: the
+// contact sums of ghosts, the friction ratios, the walls' reactions) crossing rank boundaries,
+// with its interface pressures migrating with the atoms under dynamic balancing.
+TEST_F(Parallel, FrictionalSlidingWithMigrationAndBalancing)
+{
+  // the block and its floor in a data file, so that every run has the same atom IDs
+  HIDE_OUTPUT([&] {
+    for (const auto &line :
+         {"dimension 2", "boundary f f p", "atom_style sph/soil", "atom_modify map array",
+          "lattice sq 0.002 origin 0.5 0.5 0",
+          "region box block -0.01 0.2 -0.01 0.03 -0.001 0.001 units box", "create_box 2 box",
+          "region soil block 0 0.08 0 0.008 INF INF units box",
+          "region floor block -0.006 0.196 -0.006 0 INF INF units box",
+          "create_atoms 1 region soil", "create_atoms 2 region floor", "group soil type 1",
+          "group floor type 2", "sph_soil/set all mass $(2000*0.002*0.002) h 0.0024 density 2000",
+          "velocity soil set 0.5 0 0 units box", "write_data sliding.data"})
+      command(line);
+  });
+  expect_same_on_one_rank({"units si", "dimension 2", "boundary f f p", "atom_style sph/soil",
+                           "atom_modify map array", "read_data sliding.data", "group soil type 1",
+                           "group floor type 2", "sph_soil/set soil geostatic 0.008 2000 8.4 0.5",
+                           "sph_soil/set floor wall 0 0 0 0 1 0",
+                           "pair_style sph/soil alpha 1 beta 1 artificial_stress 0",
+                           "pair_coeff 1 1 soil 2000 2e6 0.3 30 0 1e5",
+                           "pair_coeff 2 2 wall friction 0.4 adhesion 20",
+                           "fix gravity soil gravity 9.81 vector 0.514 -0.857 0",
+                           "fix integrate soil sph/soil", "neighbor 0.0005 bin",
+                           "neigh_modify every 1 delay 0 check yes",
+                           "fix balance all balance 100 1.0 shift x 10 1.0", "timestep 1e-5",
+                           "thermo 0", "run 3000 post no"});
+}
