@@ -42,6 +42,8 @@ class FixSPHSoilWalls : public Fix {
   void setup(int) override;
   void post_force(int) override;
 
+  // the walls unit that created it (one per LAMMPS instance: its ID is fixed, see sph_soil_walls)
+  const void *owner = nullptr;
   // which atom types are walls (non-zero), index 0..ntypes
   void set_wall_types(const std::vector<int> &wall_of_type) { is_wall_type = wall_of_type; }
   // what runs after every other force of the step (nothing if empty)

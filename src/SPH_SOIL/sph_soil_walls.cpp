@@ -184,6 +184,11 @@ void SPHSoilWalls::create_kinematics()
   if (index < 0) modify->add_fix(kinematics_id + " all SPH_SOIL_WALLS");
   kinematics = dynamic_cast<FixSPHSoilWalls *>(modify->fix[modify->find_fix(kinematics_id)]);
   if (!kinematics) error->all(FLERR, "Pair sph/soil: fix {} is not the walls' kinematics", kinematics_id);
+  if (kinematics->owner && kinematics->owner != this)
+    error->all(FLERR, "Pair sph/soil: a second instance of pair style sph/soil with walls (e.g. "
+                      "under pair_style hybrid) is not supported: fix {} belongs to the first",
+               kinematics_id);
+  kinematics->owner = this;
   std::vector<int> wall_of_type(kind_of_type.size());
   for (size_t t = 0; t < kind_of_type.size(); t++) wall_of_type[t] = kind_of_type[t] != NEIGHBOUR_SOIL;
   kinematics->set_wall_types(wall_of_type);
