@@ -21,7 +21,7 @@ using SPHSoil::CONTACT_SUMS;
 
 SPHSoilWallFriction::SPHSoilWallFriction(LAMMPS *lmp, Pair *owner_) :
     Pointers(lmp), owner(owner_), nmax(0), contact(nullptr), ratio(nullptr), reaction(nullptr),
-    exchange(CONTACTS), sliding_count(0)
+    exchange(CONTACTS)
 {
 }
 
@@ -68,7 +68,6 @@ void SPHSoilWallFriction::apply(double *pressures)
   const double *h = avec->smoothing_length;
   const int *type = atom->type;
   const double dt = update->dt;
-  bigint slid = 0;
   for (int i = 0; i < nlocal; i++) {
     double *r = ratio + (size_t) 3 * i;
     const double *c = contact + (size_t) i * CONTACT_SUMS;
@@ -77,12 +76,10 @@ void SPHSoilWallFriction::apply(double *pressures)
       pressures[i] = SPHSoil::NO_CONTACT;
       continue;
     }
-    if (SPHSoil::contact_friction(c, rmass[i], f[i], v[i], h[i], wave_speed_of_type[type[i]], dt,
-                                  pressures[i], r))
-      slid++;
+    SPHSoil::contact_friction(c, rmass[i], f[i], v[i], h[i], wave_speed_of_type[type[i]], dt,
+                              pressures[i], r);
     for (int a = 0; a < 3; a++) f[i][a] += r[a] * c[SPHSoil::C_NORMAL_FORCE];
   }
-  sliding_count = slid;
   exchange = RATIOS;
   SPHSoilCompat::forward_comm_pair(comm, owner);
 

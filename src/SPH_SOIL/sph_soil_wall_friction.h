@@ -17,7 +17,6 @@
 #ifndef LMP_SPH_SOIL_WALL_FRICTION_H
 #define LMP_SPH_SOIL_WALL_FRICTION_H
 
-#include "lmptype.h"
 #include "pointers.h"
 #include "soil_wall_friction.h"
 
@@ -52,8 +51,6 @@ class SPHSoilWallFriction : protected Pointers {
   // `pressures` the owned atoms' interface pressures (the state of the regularization,
   // soil_wall_friction.h), updated
   void apply(double *pressures);
-  // owned soil particles that slid at the last apply() (this rank)
-  bigint sliding() const { return sliding_count; }
 
   // the communication of apply(), handed on by the walls unit
   enum Exchange { CONTACTS, RATIOS, REACTIONS };
@@ -78,7 +75,6 @@ class SPHSoilWallFriction : protected Pointers {
   double *ratio;       // per atom, friction force / normal force (3)
   double *reaction;    // per atom, the walls' shares (3)
   Exchange exchange;
-  bigint sliding_count;
 };
 
 }    // namespace LAMMPS_NS

@@ -31,7 +31,8 @@ using namespace SPHSoil;
 
 SPHSoilWalls::SPHSoilWalls(LAMMPS *lmp, Pair *owner_) :
     Pointers(lmp), owner(owner_), avec(nullptr), has_mirror(false), has_extrapolated(false),
-    has_friction(false), friction(nullptr), friction_exchange(false), may_turn(false), kinematics(nullptr), nmax(0), sums(nullptr), state(nullptr)
+    has_friction(false), friction(nullptr), friction_exchange(false), may_turn(false),
+    kinematics(nullptr), nmax(0), sums(nullptr), state(nullptr)
 {
   // one ID for every instance of the pair style, so that the fix finds its per-atom state
   // (the interface pressures) in a restart file whatever pair style instance wrote it

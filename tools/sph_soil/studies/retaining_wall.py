@@ -9,8 +9,9 @@ default 0: a smooth wall). A run whose wall moved away from the soil is active, 
 was pushed into it passive. For each run it reports
   - K_at_rest: the mean K while the wall is at rest (displacement 0), against K0 = 1 - sin(phi);
   - K_final: the mean K over the last 10% of the wall's travel, against the limit value: for a
-    smooth wall Rankine's Ka = (1 - sin phi)/(1 + sin phi) or Kp = 1/Ka, for a rough one the
-    horizontal part K cos(delta) of Coulomb's
+    smooth wall Rankine's Ka = (1 - sin phi)/(1 + sin phi) or Kp = 1/Ka, for a rough one pushed
+    into the soil Lancellotta's (2002) lower bound (lancellotta()), for a rough one moved away
+    the horizontal part K cos(delta) of Coulomb's
         K = cos^2 phi / (cos delta (1 + s sqrt(sin(phi + delta) sin phi / cos delta))^2)
     with s = +1 active, -1 passive (vertical wall, horizontal surface);
 prints them as JSON and plots K against the wall's displacement over H.
@@ -70,13 +71,19 @@ def earth_pressure(runs, phi=30.0, height=1.0, json_path=None, plot=None):
         passive = travel < 0.0
         rest = k[shift == 0.0]
         final = k[np.abs(shift) >= 0.9 * abs(travel)] if travel != 0.0 else k[-1:]
-        reference = limit(phi, delta, passive)
+        # the reference: Rankine for a smooth wall, Coulomb's active value for a rough one, and
+        # Lancellotta's lower bound for a rough passive wall (Coulomb's passive value is far
+        # too high there)
+        rough_passive = passive and delta > 0.0
+        reference = lancellotta(phi, delta) if rough_passive else limit(phi, delta, passive)
+        name = ('Lancellotta' if rough_passive else 'Rankine' if delta == 0.0 else 'Coulomb')
         r = {'wall': 'passive' if passive else 'active', 'delta_deg': delta,
              'K_at_rest': float(rest.mean()) if len(rest) else None,
              'at_rest_over_K0': float(rest.mean() / k0) if len(rest) else None,
              'K_final': float(final.mean()),
              'K_limit': reference,
-             'limit': ('Rankine' if delta == 0.0 else 'Coulomb') + (' Kp' if passive else ' Ka'),
+             'K_coulomb': limit(phi, delta, passive),
+             'limit': name + (' Kp' if passive else ' Ka'),
              'final_over_limit': float(final.mean() / reference),
              'travel_over_H': float(abs(travel) / height)}
         # the force settles: its swing (max - min over mean) over the last 20% of the travel
