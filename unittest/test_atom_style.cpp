@@ -16,9 +16,8 @@ using namespace SPHSoilTesting;
 
 namespace {
 
-class AtomStyleSPHSoil : public LAMMPSTest {
+class AtomStyleSPHSoil : public SoilTest {
  protected:
-  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
 
   // A 2D periodic box with 200 particles whose every state value differs from atom to atom.
   void create_system()

@@ -480,9 +480,8 @@ std::vector<BadInput> cases()
   return c;
 }
 
-class BadInputs : public LAMMPSTest, public ::testing::WithParamInterface<BadInput> {
+class BadInputs : public SoilTest, public ::testing::WithParamInterface<BadInput> {
  protected:
-  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
 
   // the fixture's set-ups:
   //  none:     units si only

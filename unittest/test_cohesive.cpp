@@ -21,9 +21,8 @@ struct TensionResult {
   double mean_stress;    // the mean of (sxx + syy) / 2 over the particles (Pa)
 };
 
-class CohesiveSoil : public LAMMPSTest {
+class CohesiveSoil : public SoilTest {
  protected:
-  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
 
   // A periodic 20 x 20 square lattice of elastic soil (Drucker-Prager, phi = 0, c far above the
   // stress) in isotropic tension sigma, with random velocities of 0.01 m/s. The pairs' tension

@@ -70,9 +70,8 @@ std::map<tagint, std::vector<double>> gather(LAMMPS *lmp, MPI_Comm comm)
   return state;
 }
 
-class Parallel : public LAMMPSTest {
+class Parallel : public SoilTest {
  protected:
-  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
 
   // A disordered periodic patch of soil drifting diagonally across the box at 2 m/s and 1 m/s
   // (every atom crosses rank boundaries many times), with a shear wave and varying stresses;

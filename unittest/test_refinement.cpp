@@ -23,9 +23,8 @@ namespace {
 
 const char *const SOIL = "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0";
 
-class Refinement : public LAMMPSTest {
+class Refinement : public SoilTest {
  protected:
-  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
 
   // A periodic lattice of spacing 1 cm with mass rho0 d^D (so the derived d_p is 1 cm),
   // optionally disordered, with velocities and stresses that vary in space.

@@ -40,9 +40,8 @@ std::unique_ptr<SPHSoil::ConstitutiveModel> make_dummy(const std::vector<std::st
   return SPHSoil::make_model("drucker_prager", words, error);
 }
 
-class Registries : public LAMMPSTest {
+class Registries : public SoilTest {
  protected:
-  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
   static void SetUpTestSuite()
   {
     register_refine_criterion(refine_criterion_entry<DummyCriterion>());

@@ -17,9 +17,8 @@ using namespace SPHSoilTesting;
 
 namespace {
 
-class Restart : public LAMMPSTest {
+class Restart : public SoilTest {
  protected:
-  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
 
   // a soil column in a box of walls (floor no-slip, sides mirror, frictional right wall), under
   // gravity, refined where it strains: the state a restart must carry

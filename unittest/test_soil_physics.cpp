@@ -23,9 +23,8 @@ struct ColumnResult {
   double max_speed, base_stress, slope;
 };
 
-class SoilPhysics : public LAMMPSTest {
+class SoilPhysics : public SoilTest {
  protected:
-  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
   ColumnResult geostatic_column(const std::vector<std::string> &wall_commands);
   // at rest: velocities far below the free-fall speed over one particle, sqrt(2 g d) = 0.28 m/s;
   // the vertical stress at the base (the fit at y = 0) and its slope within the tolerances of

@@ -20,9 +20,8 @@ namespace {
 // Voigt xx yy zz xy xz yz
 const double STRESS[6] = {-2000.0, -3000.0, -1000.0, 500.0, 0.0, 0.0};
 
-class Virial : public LAMMPSTest, public ::testing::WithParamInterface<const char *> {
+class Virial : public SoilTest, public ::testing::WithParamInterface<const char *> {
  protected:
-  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
 
   // a periodic square lattice (20 x 16 at 1 cm, h = 1.2 d) of uniform stress, at rest
   void uniform_patch(const std::string &newton)

@@ -12,9 +12,8 @@ using namespace SPHSoilTesting;
 
 namespace {
 
-class Walls : public LAMMPSTest {
+class Walls : public SoilTest {
  protected:
-  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
 
   // a 2D block of soil (20 x 10 particles) on a floor against a left wall
   void soil_in_a_corner(const std::string &newton = "on", const std::string &wall = "wall")

@@ -9,6 +9,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "math_const.h"
 #include "soil_refine_split.h"
 #include "neighbor.h"
 #include "soil_kernels.h"
@@ -20,6 +21,7 @@
 #include <cmath>
 
 using namespace LAMMPS_NS;
+using MathConst::MY_PI;
 using SPHSoilOffenders::find_offenders;
 
 /* ----------------------------------------------------------------------
@@ -44,12 +46,8 @@ void PairSPHSoil::warn_geostatic_across_gravity()
 {
   const int vertical = avec->geostatic_vertical;
   if (vertical < 0 || comm->me != 0) return;
-  double g[3] = {0.0, 0.0, 0.0};
-  for (Fix *fix : SPHSoilFixes::gravity_fixes(lmp)) {
-    int dim;
-    if (const double *gvec = static_cast<const double *>(fix->extract("gvec", dim)))
-      for (int a = 0; a < 3; a++) g[a] += gvec[a];
-  }
+  double g[3];
+  SPHSoilFixes::gravity_sum(SPHSoilFixes::gravity_fixes(lmp), g);
   int along = 0;
   for (int a = 1; a < 3; a++)
     if (std::fabs(g[a]) > std::fabs(g[along])) along = a;
@@ -147,7 +145,8 @@ void PairSPHSoil::check_list_fits()
       worst = MAX(worst, h[i] / SPHSoil::volume_spacing(rmass[i] / rho[i], dimension));
   MPI_Allreduce(&worst, &worst_all, 1, MPI_DOUBLE, MPI_MAX, world);
   const double reach = SPHSoil::kernel_support(kernel) * worst_all * (1.0 + neighbor->skin / max_h);
-  const double partners = 0.5 * (dimension == 3 ? 4.18879 * reach * reach * reach : 3.14159 * reach * reach);
+  const double partners =
+      0.5 * (dimension == 3 ? 4.0 / 3.0 * MY_PI * reach * reach * reach : MY_PI * reach * reach);
   const double bytes = (double) atom->natoms * partners * sizeof(int);
   const auto nodes = SPHSoilMemory::nodes(world);
   if (nodes.bytes > 0.0 && bytes > nodes.bytes)

@@ -220,17 +220,15 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
       SPHSoil::viscosity_length(viscosity_h0, SPHSoil::viscosity_h_weight(viscosity_h0), hij);
   SPHSoil::PairTerms<D> terms;
   SPHSoil::pair_terms<D>(separation, r2, hij, viscosity_h, factor, image.dv, image.approach,
-                         image.approach, image.stress_sum, rhos, c_ij, viscosity_alpha,
-                         viscosity_beta, terms);
+                         image.stress_sum, rhos, c_ij, viscosity_alpha, viscosity_beta, terms);
   // a smooth or frictional wall pushes along its normal only, and never pulls (an interface
   // carries no tension: a soil in tension comes off it); a frictional wall's pushing pairs go
   // to the interface, which adds the friction after all forces of the step (doc/theory.rst 4.4)
   if (slip != SPHSoil::SLIP_NONE) {
     const double push = SPHSoil::pushing_part<D>(terms.force, normal);
     if (slip == SPHSoil::SLIP_FRICTION && push > 0.0) {
-      double normal_separation = 0.0;
-      for (int a = 0; a < D; a++) normal_separation += separation[a] * normal[a];
-      const double area = SPHSoil::contact_area(ps[P_VOLUME], pw[P_MASS] / rhos, factor, normal_separation);
+      const double area =
+          SPHSoil::contact_area(ps[P_VOLUME], pw[P_MASS] / rhos, factor, image.normal_separation);
       walls->interface()->add_pair(soil, wall, ps[P_MASS] * pw[P_MASS] * push,
                                    walls->frictions()[wall_type], normal, pw + P_V,
                                    walls->adhesions()[wall_type], area, update_soil, update_wall);
@@ -346,8 +344,7 @@ template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL> void
       for (int a = 0; a < D; a++) approach += dv[a] * g.dx[a];
       SPHSoil::PairTerms<D> terms;
       const double viscosity_h = SPHSoil::viscosity_length(h0, h0_weight, g.hij);
-      SPHSoil::pair_terms<D>(g.dx, g.r2, g.hij, viscosity_h, g.factor, dv, approach, approach,
-                             stress_sum, 0.5 * (rhoi + pj[P_RHO]), c_i[jtype], alpha,
+      SPHSoil::pair_terms<D>(g.dx, g.r2, g.hij, viscosity_h, g.factor, dv, approach, stress_sum, 0.5 * (rhoi + pj[P_RHO]), c_i[jtype], alpha,
                              beta_viscosity, terms);
 
       const double mj = pj[P_MASS], volume_j = pj[P_VOLUME], mass_product = mi * mj;

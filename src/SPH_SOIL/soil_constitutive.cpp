@@ -4,6 +4,8 @@
 
 #include "soil_constitutive.h"
 
+#include <limits>
+
 #include <cmath>
 #include <cstdlib>
 #include <utility>
@@ -93,3 +95,22 @@ bool FrictionalParameters::from_words(const std::string &model, const std::vecto
 // out-of-class definitions: C++11/14 need them when the constants are bound to a reference
 constexpr const char *FrictionalParameters::WORDS;
 constexpr int FrictionalParameters::COUNT;
+
+bool FrictionalParameters::tension_from_word(const std::string &model, const std::string &value,
+                                             double &tension, std::string &error)
+{
+  if (parse_finite_number(value, tension)) return true;
+  error = model + " tension '" + value + "': the tensile strength must be a number (Pa), >= 0";
+  return false;
+}
+
+std::string FrictionalParameters::check_tension(double tension, double apex, const char *apex_name)
+{
+  if (!(tension >= 0.0))
+    return "tension = " + format_number(tension) + ": the tensile strength must be >= 0 Pa";
+  if (tension < std::numeric_limits<double>::infinity() && tension > apex)
+    return "tension = " + format_number(tension) + ": the tensile strength must be in [0, " +
+        format_number(apex) + "] Pa, " + apex_name + " of this phi and c (the apex limits the " +
+        "tension already)";
+  return "";
+}

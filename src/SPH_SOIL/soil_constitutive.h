@@ -103,6 +103,13 @@ struct FrictionalParameters {
   static bool from_words(const std::string &model, const std::vector<std::string> &words,
                          FrictionalParameters &parameters, std::vector<std::string> &options,
                          std::string &error);
+
+  // The tension cut-off T of the models that have one ('tension T'): the option's value as a
+  // number (false with the reason, naming `model`, in `error`), and its range [0, apex], the
+  // apex's mean stress (described by `apex_name`) limiting the tension already; empty if fine.
+  static bool tension_from_word(const std::string &model, const std::string &value,
+                                double &tension, std::string &error);
+  static std::string check_tension(double tension, double apex, const char *apex_name);
 };
 
 }    // namespace SPHSoil

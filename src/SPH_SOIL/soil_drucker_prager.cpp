@@ -56,8 +56,6 @@ std::string DruckerPrager::check(const DruckerPragerParameters &p)
 {
   const std::string problem = p.check();
   if (!problem.empty()) return problem;
-  if (!(p.tension >= 0.0))
-    return "tension = " + format_number(p.tension) + ": the tensile strength must be >= 0 Pa";
   const double beta = flow_beta(p.dilatancy_angle);
   if (p.fit == DruckerPragerFit::exact && !(3.0 * beta * beta < 1.0))
     return "fit exact: no plane-strain fit is exact for dilatancy angle psi = " +
@@ -65,16 +63,10 @@ std::string DruckerPrager::check(const DruckerPragerParameters &p)
         "allows plastic flow in plane strain only for psi in [0, " +
         format_number(largest_exact_dilatancy()) + ") degrees; choose 'fit associated' or 'fit " +
         "nonassociated'";
-  if (p.tension < std::numeric_limits<double>::infinity()) {
-    double alpha, kc;
-    cone(p, alpha, kc);
-    const double apex = apex_mean_stress(alpha, kc);
-    if (p.tension > apex)
-      return "tension = " + format_number(p.tension) + ": the tensile strength must be in [0, " +
-          format_number(apex) + "] Pa, the mean stress at the apex of the cone k_c / (3 alpha_phi)" +
-          " of this phi and c (the apex limits the tension already)";
-  }
-  return "";
+  double alpha, kc;
+  cone(p, alpha, kc);
+  return FrictionalParameters::check_tension(p.tension, apex_mean_stress(alpha, kc),
+                                             "the mean stress at the apex of the cone k_c / (3 alpha_phi)");
 }
 
 std::unique_ptr<ConstitutiveModel> DruckerPrager::create(const std::vector<std::string> &words,
@@ -95,11 +87,8 @@ std::unique_ptr<ConstitutiveModel> DruckerPrager::create(const std::vector<std::
         return nullptr;
       }
     } else if (options[k] == "tension") {
-      if (!parse_finite_number(value, parameters.tension)) {
-        error = std::string(KEYWORD) + " tension '" + value +
-            "': the tensile strength must be a number (Pa), >= 0";
+      if (!FrictionalParameters::tension_from_word(KEYWORD, value, parameters.tension, error))
         return nullptr;
-      }
     } else {
       error = std::string(KEYWORD) + ": unknown option '" + options[k] + "' (allowed: fit, tension)";
       return nullptr;

@@ -5,6 +5,7 @@
 #include "soil_material.h"
 
 #include "soil_models.h"
+#include "soil_tensor.h"
 
 #include <cctype>
 #include <cmath>
@@ -12,7 +13,8 @@
 
 using namespace SPHSoil;
 
-// the value after words[k] as a finite number in [low, high) (high < 0: no upper bound)
+// the value after words[k], "a <what>", as a finite number in [low, high) (high < 0: no upper
+// bound)
 static bool wall_number(const std::string &name, const std::vector<std::string> &words, size_t &k,
                         const char *what, double low, double high, double &value,
                         std::string &error)
@@ -21,14 +23,12 @@ static bool wall_number(const std::string &name, const std::vector<std::string> 
   const std::string range = high < 0.0 ? ">= " + format_number(low)
                                        : "in [" + format_number(low) + ", " + format_number(high) + ")";
   if (k + 1 >= words.size()) {
-    error = "material " + name + ": wall " + word + " needs " + what + " " + range;
+    error = "material " + name + ": wall " + word + " needs a " + what + " " + range;
     return false;
   }
   const std::string &text = words[++k];
-  std::string bare = what;    // "a coefficient mu" -> "coefficient mu"
-  if (bare.rfind("a ", 0) == 0) bare = bare.substr(2);
   if (!parse_finite_number(text, value) || value < low || (high >= 0.0 && value >= high)) {
-    error = "material " + name + ": wall " + word + " " + bare + " = " + text +
+    error = "material " + name + ": wall " + word + " " + what + " = " + text +
         " must be finite and " + range;
     return false;
   }
@@ -55,17 +55,17 @@ static bool wall_from_words(const std::string &name, const std::vector<std::stri
           : word == "freeslip"         ? WallSlip::freeslip
                                        : WallSlip::friction;
       if (word == "friction") {
-        if (!wall_number(name, words, k, "a coefficient mu", 0.0, -1.0, material.friction, error))
+        if (!wall_number(name, words, k, "coefficient mu", 0.0, -1.0, material.friction, error))
           return false;
       } else if (word == "delta") {
         double degrees = 0.0;
-        if (!wall_number(name, words, k, "a friction angle (degrees)", 0.0, 90.0, degrees, error))
+        if (!wall_number(name, words, k, "friction angle (degrees)", 0.0, 90.0, degrees, error))
           return false;
-        material.friction = std::tan(degrees * 3.14159265358979323846 / 180.0);
+        material.friction = std::tan(degrees * DEG2RAD);
       }
     } else if (word == "adhesion") {
       adhesion_given = true;
-      if (!wall_number(name, words, k, "a value c_a (stress units)", 0.0, -1.0, material.adhesion, error))
+      if (!wall_number(name, words, k, "value c_a (stress units)", 0.0, -1.0, material.adhesion, error))
         return false;
     } else if (word == "boundary") {
       if (boundary_given || k + 1 >= words.size()) {

@@ -18,17 +18,11 @@ std::string MohrCoulomb::check(const FrictionalParameters &parameters, double te
 {
   const std::string problem = parameters.check();
   if (!problem.empty()) return problem;
-  if (!(tension >= 0.0))
-    return "tension = " + format_number(tension) + ": the tensile strength must be >= 0 Pa";
   const double sin_phi = std::sin(parameters.friction_angle * DEG2RAD);
-  if (tension < std::numeric_limits<double>::infinity() && sin_phi > 0.0) {
-    const double apex = parameters.cohesion * std::cos(parameters.friction_angle * DEG2RAD) / sin_phi;
-    if (tension > apex)
-      return "tension = " + format_number(tension) + ": the tensile strength must be in [0, " +
-          format_number(apex) + "] Pa, the apex c cot(phi) of this phi and c (the apex limits " +
-          "the tension already)";
-  }
-  return "";
+  const double apex = sin_phi > 0.0
+      ? parameters.cohesion * std::cos(parameters.friction_angle * DEG2RAD) / sin_phi
+      : std::numeric_limits<double>::infinity();
+  return FrictionalParameters::check_tension(tension, apex, "the apex c cot(phi)");
 }
 
 MohrCoulomb::MohrCoulomb(const FrictionalParameters &parameters, double tension_cutoff) :
@@ -65,11 +59,7 @@ std::unique_ptr<ConstitutiveModel> MohrCoulomb::create(const std::vector<std::st
       error = std::string(KEYWORD) + ": unknown option '" + options[k] + "' (allowed: tension)";
       return nullptr;
     }
-    if (!parse_finite_number(value, tension)) {
-      error = std::string(KEYWORD) + " tension '" + value +
-          "': the tensile strength must be a number (Pa), >= 0";
-      return nullptr;
-    }
+    if (!FrictionalParameters::tension_from_word(KEYWORD, value, tension, error)) return nullptr;
   }
   const std::string problem = check(parameters, tension);
   if (!problem.empty()) {

@@ -56,8 +56,7 @@ inline double viscosity_length(double h0, double h_weight, double h)
 // with S = sigma_a/rho_a^2 + sigma_b/rho_b^2 (Voigt) and Monaghan's Pi_ab for approaching pairs
 // (viscosity_h: viscosity_length()). b is another soil particle, a wall particle that
 // extrapolates the soil's state, or the image of a mirror wall particle (the pair style builds
-// its velocity and stress). `approach` = v_ab . x_ab; `viscous_approach` the part of it that the
-// viscosity sees: the same, except behind a frictional wall (its normal part). Plain scalars
+// its velocity and stress). `approach` = v_ab . x_ab. Plain scalars
 // with compile-time indices: the compiler keeps the pair in registers (a struct of the pair's
 // inputs with the stress components through a table kept it in memory: 40% more instructions).
 template <int DIMENSION> struct PairTerms {
@@ -68,14 +67,14 @@ template <int DIMENSION> struct PairTerms {
 
 template <int DIMENSION>
 inline void pair_terms(const double dx[3], double r2, double h, double viscosity_h, double factor,
-                       const double dv[3], double approach, double viscous_approach,
+                       const double dv[3], double approach,
                        const double stress_sum[6], double mean_density, double sound_speed,
                        double alpha, double beta, PairTerms<DIMENSION> &out)
 {
   out.density_rate = factor * approach;
   double viscosity = 0.0;
-  if (viscous_approach < 0.0)
-    viscosity = monaghan_viscosity(alpha, beta, viscosity_h * viscous_approach,
+  if (approach < 0.0)
+    viscosity = monaghan_viscosity(alpha, beta, viscosity_h * approach,
                                    r2 + 0.01 * h * h, mean_density, sound_speed);
   for (int a = 0; a < DIMENSION; a++) {
     double sum = -viscosity * dx[a];

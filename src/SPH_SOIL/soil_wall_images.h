@@ -26,12 +26,12 @@ namespace SPHSoil {
 // how a wall holds the soil along its surface, per wall type
 enum WallSlipCode { SLIP_NONE = 0, SLIP_FREE = 1, SLIP_FRICTION = 2 };
 
-// R sigma R with R = I - 2 n n^T, the mirror image of a stress in the plane of unit normal n:
-// it keeps the normal stresses and flips the shear between the normal and the plane. Also
-// returns the traction's normal part n.sigma.n and its shear part |sigma n - (n.sigma.n) n|.
-// Voigt order xx yy zz xy xz yz.
-inline void mirror_stress(const double stress[6], const double n[3], double mirrored[6],
-                          double &normal_traction, double &shear_traction)
+// sigma + R sigma R with R = I - 2 n n^T: the stress sum of a soil particle and its image behind
+// a smooth (free-slip) wall. R sigma R, the mirror image of a stress in the plane of unit normal
+// n, keeps the normal stresses and flips the shear between the normal and the plane, so the wall
+// carries no shear traction, as the mirrored velocity v - 2 (v.n) n has no tangential slip
+// relative to the soil. Voigt order xx yy zz xy xz yz.
+inline void mirrored_stress_sum(const double stress[6], const double n[3], double sum[6])
 {
   double sn[3];    // sigma n
   for (int a = 0; a < 3; a++)
@@ -40,27 +40,25 @@ inline void mirror_stress(const double stress[6], const double n[3], double mirr
   const double nsn = n[0] * sn[0] + n[1] * sn[1] + n[2] * sn[2];
   for (int k = 0; k < 6; k++) {
     const int a = VOIGT_ROW[k], b = VOIGT_COL[k];
-    mirrored[k] = stress[k] - 2.0 * (n[a] * sn[b] + sn[a] * n[b]) + 4.0 * n[a] * n[b] * nsn;
+    const double mirrored = stress[k] - 2.0 * (n[a] * sn[b] + sn[a] * n[b]) + 4.0 * n[a] * n[b] * nsn;
+    sum[k] = stress[k] + mirrored;
   }
-  double shear2 = 0.0;
-  for (int a = 0; a < 3; a++) shear2 += (sn[a] - nsn * n[a]) * (sn[a] - nsn * n[a]);
-  normal_traction = nsn;
-  shear_traction = std::sqrt(shear2);
 }
 
-// sigma + R sigma R: the stress sum of a soil particle and its image behind a smooth
-// (free-slip) wall. The wall carries no shear traction, as the mirrored velocity
-// v - 2 (v.n) n has no tangential slip relative to the soil.
-inline void mirrored_stress_sum(const double stress[6], const double n[3], double sum[6])
+// a soil particle's distance beyond the plane of a mirror wall particle: its separation from
+// the particle (x_s - x_w) along the normal less the particle's own distance behind the plane
+template <int DIMENSION>
+inline double beyond_wall_plane(const double separation[3], const double n[3], double wall_distance)
 {
-  double mirrored[6], normal_traction, shear_traction;
-  mirror_stress(stress, n, mirrored, normal_traction, shear_traction);
-  for (int k = 0; k < 6; k++) sum[k] = stress[k] + mirrored[k];
+  double beyond = -wall_distance;
+  for (int a = 0; a < DIMENSION; a++) beyond += separation[a] * n[a];
+  return beyond;
 }
 
 // The image of mirror wall particle w for soil particle s, from their packed rows
 // (soil_packed_rows.h): the velocity difference dv = v_s - v_image, the stress sum
-// sigma_s / rho_s^2 + sigma_image / rho_s^2 and the approach dv . x_sw. `separation` = x_s - x_w.
+// sigma_s / rho_s^2 + sigma_image / rho_s^2, the approach dv . x_sw and the separation along the
+// normal (x_s - x_w) . n. `separation` = x_s - x_w.
 // Behind a frictional wall (SLIP_FRICTION) the image is the free-slip one: the pair pushes
 // along the normal only (pushing_part()), and the tangential force is the Coulomb interface's
 // (soil_wall_friction.h), so that nothing else, not even the artificial viscosity, drags the
@@ -69,7 +67,7 @@ inline void mirrored_stress_sum(const double stress[6], const double n[3], doubl
 struct MirrorImage {
   double dv[3];
   double stress_sum[6];
-  double approach;
+  double approach, normal_separation;
 };
 
 // What a smooth or frictional wall's image pair keeps of its force on the soil: the part along
@@ -91,8 +89,8 @@ inline void mirror_image(const double *ps, const double *pw, const double normal
 {
   constexpr int D = DIMENSION;
   // the soil particle's distance beyond the wall plane
-  double ds = -wall_distance;
-  for (int a = 0; a < D; a++) ds += separation[a] * normal[a];
+  const double ds = beyond_wall_plane<D>(separation, normal, wall_distance);
+  image.normal_separation = ds + wall_distance;
   const double beta = ds > 0.0 ? std::fmin(1.5, 1.0 + wall_distance / ds) : 1.5;
   // the image's stress: the soil particle's (no slip), or its mirror image (free slip and
   // friction: no shear traction); its velocity: the whole relative velocity (no slip), else

@@ -53,6 +53,17 @@ inline std::vector<Fix *> gravity_fixes(LAMMPS *lmp)
   return found;
 }
 
+// the soil's body force: the sum of those fixes' gravity vectors
+inline void gravity_sum(const std::vector<Fix *> &fixes, double g[3])
+{
+  for (int a = 0; a < 3; a++) g[a] = 0.0;
+  for (Fix *fix : fixes) {
+    int dim = 0;
+    if (const double *gvec = static_cast<const double *>(fix->extract("gvec", dim)))
+      for (int a = 0; a < 3; a++) g[a] += gvec[a];
+  }
+}
+
 // the first fix (by the order of the input) that `selects` and whose group holds an owned atom
 // i with `holds(i)` on some rank; nullptr if none. Collective.
 template <class Selects, class Holds> Fix *first_fix_holding(LAMMPS *lmp, Selects selects, Holds holds)

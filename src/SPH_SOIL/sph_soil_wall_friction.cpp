@@ -5,7 +5,6 @@
 #include "sph_soil_wall_friction.h"
 
 #include "atom.h"
-#include "atom_vec_sph_soil.h"
 #include "comm.h"
 #include "force.h"
 #include "memory.h"
@@ -53,7 +52,7 @@ void SPHSoilWallFriction::begin_step()
    step; v is the half-step velocity (the integrator's second half kick follows)
 ------------------------------------------------------------------------- */
 
-void SPHSoilWallFriction::apply(double *pressures)
+void SPHSoilWallFriction::apply(const double *h, double *pressures)
 {
   if (!contact) return;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
@@ -64,8 +63,6 @@ void SPHSoilWallFriction::apply(double *pressures)
   }
   double **f = atom->f, **v = atom->v;
   const double *rmass = atom->rmass;
-  auto avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
-  const double *h = avec->smoothing_length;
   const int *type = atom->type;
   const double dt = update->dt;
   for (int i = 0; i < nlocal; i++) {

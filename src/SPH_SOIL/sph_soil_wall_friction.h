@@ -47,10 +47,10 @@ class SPHSoilWallFriction : protected Pointers {
   }
   // the P-wave speed of each atom type (index 0..ntypes; 0 for walls)
   void set_wave_speeds(const std::vector<double> &speeds) { wave_speed_of_type = speeds; }
-  // after every force of the step: the friction forces on the soil and the walls;
-  // `pressures` the owned atoms' interface pressures (the state of the regularization,
-  // soil_wall_friction.h), updated
-  void apply(double *pressures);
+  // after every force of the step: the friction forces on the soil and the walls, with the
+  // atoms' smoothing lengths; `pressures` the owned atoms' interface pressures (the state of the
+  // regularization, soil_wall_friction.h), updated
+  void apply(const double *h, double *pressures);
 
   // the communication of apply(), handed on by the walls unit
   enum Exchange { CONTACTS, RATIOS, REACTIONS };

@@ -196,7 +196,7 @@ void SPHSoilWalls::create_kinematics()
   if (friction) {
     kinematics->set_after_forces([this]() {
       friction_exchange = true;
-      friction->apply(kinematics->interface_pressures());
+      friction->apply(avec->smoothing_length, kinematics->interface_pressures());
       friction_exchange = false;
     });
   } else {
@@ -297,7 +297,7 @@ template <int DIMENSION> void SPHSoilWalls::extrapolated_states(double *packed)
   const int *type = atom->type;
   const int *kind = kind_of_type.data();
   double gravity[3];
-  body_force(gravity);
+  SPHSoilFixes::gravity_sum(gravity_fixes, gravity);
   const double *rho = atom->rho;
   for (int i = 0; i < nlocal; i++) {
     if (kind[type[i]] != NEIGHBOUR_EXTRAPOLATED_WALL) continue;
@@ -335,17 +335,6 @@ template <int DIMENSION> void SPHSoilWalls::extrapolated_states(double *packed)
     for (int a = 0; a < 3; a++) row[P_V + a] = own[W_VELOCITY + a];
     row[P_RHO] = own[W_DENSITY];
     row[P_VOLUME] = row[P_MASS] / own[W_DENSITY];
-  }
-}
-
-// the soil's body force: the sum of the gravity fixes' acceleration vectors
-void SPHSoilWalls::body_force(double gravity[3]) const
-{
-  for (int a = 0; a < 3; a++) gravity[a] = 0.0;
-  for (Fix *fix : gravity_fixes) {
-    int dim;
-    if (const double *g = static_cast<const double *>(fix->extract("gvec", dim)))
-      for (int a = 0; a < 3; a++) gravity[a] += g[a];
   }
 }
 
@@ -415,9 +404,9 @@ bigint SPHSoilWalls::soil_behind_planes(const NeighbourList &list) const
       const bool wall_i = kind_of_type[type[i]] == NEIGHBOUR_MIRROR_WALL;
       const int s = wall_i ? j : i, w = wall_i ? i : j;
       if (s >= nlocal) continue;
-      const double *n = avec->wall_normal[w];
-      const double beyond = (x[s][0] - x[w][0]) * n[0] + (x[s][1] - x[w][1]) * n[1] +
-          (x[s][2] - x[w][2]) * n[2] - avec->wall_distance[w];
+      const double separation[3] = {x[s][0] - x[w][0], x[s][1] - x[w][1], x[s][2] - x[w][2]};
+      const double beyond =
+          beyond_wall_plane<3>(separation, avec->wall_normal[w], avec->wall_distance[w]);
       if (beyond < 0.0) behind[s] = 1;
     }
   bigint count = 0;

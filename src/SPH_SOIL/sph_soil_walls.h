@@ -111,7 +111,6 @@ class SPHSoilWalls : protected Pointers {
   enum { W_STRESS = 0, W_VELOCITY = 6, W_DENSITY = 9, WSTATE = 10 };
   int nmax;
   double *sums, *state;
-  void body_force(double gravity[3]) const;
   template <int DIMENSION> void extrapolated_states(double *packed);
 };
 

@@ -132,3 +132,32 @@ def test_refinement_runs_what_is_missing(tmp_path):
     lmp.runs = []
     refinement.run_matrix(lmp, ['bars'], 2, only='_L2', two_levels=True, directory=str(tmp_path))
     assert [v['maxlevel'] for _, v in lmp.runs] == ['2', '2', '2']
+
+
+def test_earth_pressure_references():
+    """Coulomb's horizontal active coefficient and Lancellotta's passive lower bound at phi = 30,
+    delta = 20 (the numbers of doc/validation.rst), and Rankine's for a smooth wall."""
+    from sph_soil.studies import retaining_wall
+    assert retaining_wall.limit(30.0, 20.0, False) == pytest.approx(0.2794, abs=1e-4)
+    assert retaining_wall.lancellotta(30.0, 20.0) == pytest.approx(4.633, abs=1e-3)
+    assert retaining_wall.lancellotta(30.0, 0.0) == pytest.approx(3.0, rel=1e-12)
+    assert retaining_wall.limit(30.0, 0.0, True) == pytest.approx(3.0, rel=1e-12)
+
+
+def test_sliding_block_measures_a_rigid_block(tmp_path):
+    """block.dat of a block that slides exactly as a rigid one, with the floor's shear mu times
+    its normal force: acceleration 1 times the rigid block's, shear / normal error 0."""
+    from sph_soil.studies import sliding_block
+    import math
+    mu, ratio = 0.4, 1.5
+    theta = math.atan(ratio * mu)
+    a = sliding_block.G * (math.sin(theta) - mu * math.cos(theta))
+    rows = ['# Time-averaged data for fix out', '# TimeStep v_t c_block v_shear v_normal']
+    for k in range(101):
+        t = 0.001 * k
+        rows.append(f'{k} {t} {a * t} {mu * 10.0} 10.0')
+    path = tmp_path / 'block.dat'
+    path.write_text('\n'.join(rows) + '\n')
+    result, _ = sliding_block.measure(str(path), mu, ratio)
+    assert result['acceleration_over_rigid'] == pytest.approx(1.0, rel=1e-9)
+    assert result['shear_over_normal_error'] == pytest.approx(0.0, abs=1e-12)

@@ -32,6 +32,12 @@
 
 namespace SPHSoilTesting {
 
+// the fixture of the package's LAMMPS tests: LAMMPSTest (unittest/testing/core.h) in SI units
+class SoilTest : public LAMMPSTest {
+ protected:
+  void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
+};
+
 // The commands that make a periodic 2D patch of soil, 20 x 16 particles at 1 cm on a disordered
 // lattice, with stresses that vary in space and no velocity (the caller sets it). Atom IDs
 // depend on the number of ranks (create_atoms), positions do not.
