@@ -352,8 +352,10 @@ std::vector<BadInput> cases()
         "timestep <= 5.80921e-05");
   error("RefineRegion", "patch", {}, "fix r all sph/soil/refine 10 region nowhere",
         "fix sph/soil/refine region nowhere does not exist");
+  error("RefineSince", "patch", {}, "fix r all sph/soil/refine 10 since birth",
+        "Illegal fix sph/soil/refine since birth: must be split or start");
   error("RefineUnknownKeyword", "patch", {}, "fix r all sph/soil/refine 10 ratio 2",
-        "Illegal fix sph/soil/refine keyword ratio (allowed: criterion, region, threshold, separation, "
+        "Illegal fix sph/soil/refine keyword ratio (allowed: criterion, region, threshold, since, separation, "
         "smoothing, dref, maxlevel)");
   error("RefineUnknownCriterion", "patch", {}, "fix r all sph/soil/refine 10 criterion stress",
         "Illegal fix sph/soil/refine criterion stress (allowed: strain, all, v_name)");
@@ -393,7 +395,7 @@ std::vector<BadInput> cases()
   error("StaticRefineRegion", "patch", {}, "sph_soil/refine all region nowhere",
         "sph_soil/refine region nowhere does not exist");
   error("StaticRefineUnknownKeyword", "patch", {}, "sph_soil/refine all maxlevel 2",
-        "Illegal sph_soil/refine keyword maxlevel (allowed: criterion, region, threshold, separation, "
+        "Illegal sph_soil/refine keyword maxlevel (allowed: criterion, region, threshold, since, separation, "
         "smoothing, dref)");
   error("StaticRefineUnknownCriterion", "patch", {}, "sph_soil/refine all criterion 0.5",
         "Illegal sph_soil/refine criterion 0.5 (allowed: strain, all, v_name)");

@@ -11,7 +11,9 @@
 #include "sph_soil_testing.h"
 
 #include "domain.h"
+#include "fix.h"
 #include "input.h"
+#include "modify.h"
 
 #include <cmath>
 
@@ -155,6 +157,26 @@ TEST_F(Parallel, RefinementWithMigrationAndBalancing)
                            "fix refine all sph/soil/refine 20 threshold 1e-12",
                            "fix balance all balance 100 1.0 shift xy 10 1.0", "thermo 0",
                            "run 1500 post no"});
+}
+
+// Deep refinement under the 2:1 balance: a zone fixed in space, which the soil flows through,
+// wants particles down to level 3; their coarse neighbours split for the balance. The same
+// levels and state on 1, 2 and 4 ranks, and no pair more than one level apart at any check.
+TEST_F(Parallel, BalancedDeepRefinementWithMigration)
+{
+  write_patch();
+  expect_same_on_one_rank({"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
+                           "read_data parallel.data", "pair_style sph/soil",
+                           "pair_coeff 1 1 soil 2650 0.7e6 0.3 0 0 1e12",
+                           "fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin",
+                           "variable zone atom (x-0.1)^2+(y-0.08)^2<0.015^2",
+                           "fix refine all sph/soil/refine 10 criterion v_zone maxlevel 3",
+                           "fix balance all balance 50 1.0 shift xy 10 1.0", "thermo 0",
+                           "run 200 post no"});
+  auto refine = lmp->modify->fix[lmp->modify->find_fix("refine")];
+  EXPECT_GT(refine->compute_vector(5), 0.0);    // level 3 reached
+  HIDE_OUTPUT([&] { command("run 10 post no"); });
+  EXPECT_EQ(refine->compute_vector(6), 0.0);    // balanced at the last check
 }
 
 // A block sliding on a frictional floor (the Coulomb interface with its communication: the

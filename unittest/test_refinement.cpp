@@ -346,6 +346,10 @@ TEST_F(Refinement, CspmKeepsAConstantStateExactly)
   }
 }
 
+// The paper's criterion (the strain since the start) splits the strained particles in the
+// region, and their daughters again, up to maxlevel, within the 2:1 balance: no level 2 within
+// 1.5 coarse supports (0.036) of a level-0 particle that may not split (outside the region),
+// coarse neighbours of level-2 particles split too (also across the periodic boundary)
 TEST_F(Refinement, FixSplitsStrainedParticlesInItsRegionUpToMaxlevel)
 {
   patch(2, 10, false);
@@ -356,9 +360,9 @@ TEST_F(Refinement, FixSplitsStrainedParticlesInItsRegionUpToMaxlevel)
     command("region left block 0 5 INF INF INF INF");
     command("group left region left");
     command("sph_soil/set left strain 0.3 0 0 0 0 0");
-    command("region low block INF INF 0 5 INF INF");
+    command("region low block INF INF 0 8 INF INF");
     command("fix integrate all sph/soil cfl 0.1");
-    command("fix refine all sph/soil/refine 1 maxlevel 2 region low");
+    command("fix refine all sph/soil/refine 1 maxlevel 2 region low since start");
     command("run 3 post no");
   });
   auto avec = soil_avec(lmp);
@@ -367,12 +371,14 @@ TEST_F(Refinement, FixSplitsStrainedParticlesInItsRegionUpToMaxlevel)
     const double x = lmp->atom->x[i][0], y = lmp->atom->x[i][1];
     const int level = avec->level[i];
     if (level > 2) local_bad++;
-    // far from both region borders: split twice inside, never outside
-    if (x > 0.012 && x < 0.038 && y > 0.012 && y < 0.038 && level != 2) local_bad++;
-    if ((x > 0.062 && x < 0.098) || y > 0.062) {
-      if (level != 0) local_bad++;
+    // strained in the region: split at least once; outside the region: never
+    if (x < 0.05 && y < 0.08 && level < 1) local_bad++;
+    if (y > 0.08 && level != 0) local_bad++;
+    // level 2: strained, and 0.036 from the level-0 particles outside (y = 0.085 and -0.005)
+    if (level == 2) {
+      local_level2++;
+      if (x > 0.05 || y < 0.031 || y > 0.049) local_bad++;
     }
-    if (level == 2) local_level2++;
   }
   int bad = 0, level2 = 0;
   MPI_Allreduce(&local_bad, &bad, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
@@ -384,6 +390,46 @@ TEST_F(Refinement, FixSplitsStrainedParticlesInItsRegionUpToMaxlevel)
   EXPECT_EQ(n0 + n1 + n2, (double) lmp->atom->natoms);
   EXPECT_EQ((double) lmp->atom->natoms, 100 + 3 * fix_vector("refine", 1));
   EXPECT_EQ(n2, level2);
+  // balanced: no pair more than one level apart at the next check
+  HIDE_OUTPUT([&] { command("run 1 post no"); });
+  EXPECT_EQ(fix_vector("refine", 5), 0.0);
+}
+
+// A daughter is judged on the strain since its birth (the default, since split): strained
+// particles that do not strain further split once, whatever maxlevel; with the paper's
+// criterion (since start) they split at every check down to maxlevel. The strain at birth
+// comes back from a restart file.
+TEST_F(Refinement, DaughtersDoNotSplitAgainOnTheirParentsStrain)
+{
+  auto levels = [&](const std::string &since) {
+    HIDE_OUTPUT([&] { command("clear"); });
+    patch(2, 6, false);
+    HIDE_OUTPUT([&] {
+      command("velocity all set 0 0 0 units box");
+      command("sph_soil/set all stress 0 0 0 0 0 0 strain 0.3 0 0 0 0 0");
+      command("fix integrate all sph/soil cfl 0.1");
+      command("fix refine all sph/soil/refine 1 maxlevel 3 since " + since);
+      command("run 4 post no");
+    });
+    return std::vector<double>{fix_vector("refine", 2), fix_vector("refine", 3), fix_vector("refine", 4),
+                               fix_vector("refine", 5)};
+  };
+  EXPECT_EQ(levels("split"), (std::vector<double>{0, 144, 0, 0}));
+  EXPECT_EQ(levels("start"), (std::vector<double>{0, 0, 0, 2304}));
+  // the strain at birth travels with restart files: no split after a restart either
+  levels("split");
+  HIDE_OUTPUT([&] {
+    command("write_restart refine.restart");
+    command("clear");
+    command("read_restart refine.restart");
+    command("pair_style sph/soil");
+    command(SOIL);
+    command("neighbor 0.003 bin");
+    command("fix integrate all sph/soil cfl 0.1");
+    command("fix refine all sph/soil/refine 1 maxlevel 3");
+    command("run 2 post no");
+  });
+  EXPECT_EQ(lmp->atom->natoms, 144);
 }
 
 TEST_F(Refinement, SameSplitsOnOneAndTwoRanks)

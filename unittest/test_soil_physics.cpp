@@ -394,6 +394,36 @@ TEST_F(SoilPhysics, UnstableRunStopsNamingParticleAndStep)
                       command("run 10 post no"));
 }
 
+// A particle that flies out through a fixed boundary stops the run at once, named, rather than
+// by LAMMPS's "Lost atoms" at the next thermo output (which names none); 'thermo_modify lost
+// ignore' lets particles leave.
+TEST_F(SoilPhysics, ParticleLeavingTheBoxStopsNamingIt)
+{
+  // the atoms are within 1 mm of x = 0.01, ..., 0.19 (and 0 or 0.2): a fixed face at
+  // x = -1.5 mm; the left column flies off through it, at 200 m/s
+  auto fly_off = [&]() {
+    new_periodic_patch();
+    HIDE_OUTPUT([&] {
+      command("change_box all x final -0.0015 0.2 boundary f p p units box");
+      command("region left block INF 0.0015 INF INF INF INF units box");
+      command("group left region left");
+      command("velocity left set -200.0 0.0 0.0 units box");
+    });
+  };
+  fly_off();
+  EXPECT_LAMMPS_ERROR(".*Fix sph/soil: particle [0-9]+ left the box through a fixed boundary at step 1 "
+                      "\\(position -0.00[0-9]+ [-0-9.e]+ [-0-9.e]+, velocity -200[0-9.]* [-0-9.e]+ 0\\); a larger "
+                      "box, or 'thermo_modify lost ignore' if particles may leave; if it flew off: .*",
+                      command("run 1 post no"));
+  // particles may leave a run that ignores lost atoms
+  fly_off();
+  HIDE_OUTPUT([&] {
+    command("thermo_modify lost ignore");
+    command("run 2 post no");
+  });
+  EXPECT_EQ(lmp->update->ntimestep, 2);
+}
+
 // the material's model and its parameters reach the integrator: a line without a model word is
 // Drucker-Prager with the fit exact for psi = 0, 'fit associated' picks Bui 2008's, the word
 // mohr_coulomb the Mohr-Coulomb model; a Mohr-Coulomb run conserves momentum like any other

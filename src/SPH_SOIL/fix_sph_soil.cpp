@@ -7,12 +7,15 @@
 #include "atom.h"
 #include "atom_vec_sph_soil.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "memory.h"
 #include "force.h"
 #include "group.h"
 #include "modify.h"
+#include "output.h"
 #include "pair_sph_soil.h"
+#include "thermo.h"
 #include "soil_constitutive.h"
 #include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
@@ -188,7 +191,9 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
     restore_pending = false;
   }
 
-  int first_unstable = -1;
+  int first_unstable = -1, first_outside = -1;
+  double lo[3], hi[3];
+  box_limits(lo, hi);
   for (int i = 0; i < nlocal; i++) {
     if (!integrated(i)) continue;
     // velocity Verlet for x, v; vest estimates v(t + dt) for the rates
@@ -211,11 +216,54 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
     }
     model_of_type[atom->type[i]]->return_to_admissible(avec->stress[i]);
     // the positions only (a non-finite velocity makes them non-finite): what LAMMPS checks
-    // before the next neighbour list; the whole state is checked after the corrector
-    if (!std::isfinite(x[i][0] + x[i][1] + x[i][2]) && lower_id(i, first_unstable))
-      first_unstable = i;
+    // before the next neighbour list; the whole state is checked after the corrector. The
+    // comparisons are false for a NaN too.
+    if (!(x[i][0] >= lo[0] && x[i][0] < hi[0] && x[i][1] >= lo[1] && x[i][1] < hi[1] &&
+          x[i][2] >= lo[2] && x[i][2] < hi[2])) {
+      if (!std::isfinite(x[i][0] + x[i][1] + x[i][2])) {
+        if (lower_id(i, first_unstable)) first_unstable = i;
+      } else if (lower_id(i, first_outside)) {
+        first_outside = i;
+      }
+    }
   }
   stop_if_unstable(first_unstable);
+  stop_if_left_box(first_outside);
+}
+
+/* ----------------------------------------------------------------------
+   where the particles may go: within a fixed ('f') boundary of an orthogonal box, unless the
+   run ignores lost atoms (thermo_modify lost ignore); unbounded elsewhere
+------------------------------------------------------------------------- */
+
+void FixSPHSoil::box_limits(double lo[3], double hi[3]) const
+{
+  const bool bounded = !domain->triclinic && output->thermo->lostflag != Thermo::IGNORE;
+  for (int a = 0; a < 3; a++) {
+    lo[a] = bounded && domain->boundary[a][0] == 1 ? domain->boxlo[a] : -INFINITY;
+    hi[a] = bounded && domain->boundary[a][1] == 1 ? domain->boxhi[a] : INFINITY;
+  }
+}
+
+// A particle beyond a fixed boundary would be lost at the next neighbour list, and LAMMPS's
+// "Lost atoms" names none: the run stops here instead, naming it (collective).
+void FixSPHSoil::stop_if_left_box(int first_outside)
+{
+  const auto outside = SPHSoilOffenders::reduce_offenders(
+      lmp, first_outside >= 0 ? 1 : 0, first_outside, [&](int i, double *values) {
+        for (int a = 0; a < 3; a++) {
+          values[a] = atom->x[i][a];
+          values[3 + a] = atom->v[i][a];
+        }
+      });
+  if (!outside) return;
+  const double *s = outside.values;
+  error->all(FLERR,
+             "Fix sph/soil: particle {} left the box through a fixed boundary at step {} "
+             "(position {} {} {}, velocity {} {} {}); a larger box, or 'thermo_modify lost ignore' "
+             "if particles may leave; if it flew off: {}",
+             outside.first, update->ntimestep, s[0], s[1], s[2], s[3], s[4], s[5],
+             likely_causes(1.0, 1.0));
 }
 
 /* ----------------------------------------------------------------------

@@ -93,6 +93,8 @@ class FixSPHSoil : public Fix {
   // whether atom i has a lower ID than atom j (any, if j < 0)
   bool lower_id(int i, int j) const { return j < 0 || atom->tag[i] < atom->tag[j]; }
   void stop_if_unstable(int first_unstable);
+  void box_limits(double lo[3], double hi[3]) const;
+  void stop_if_left_box(int first_outside);
   std::string likely_causes(double density, double reference_density);
   double stable_timestep();
   void adapt_timestep();

@@ -12,6 +12,7 @@
 #include "fix_sph_soil.h"
 #include "group.h"
 #include "force.h"
+#include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "pair_sph_soil.h"
@@ -19,6 +20,7 @@
 #include "soil_constitutive.h"
 #include "soil_refine_error.h"
 #include "soil_refine_split.h"
+#include "sph_soil_refine_balance.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_input.h"
 #include "sph_soil_refine_selection.h"
@@ -42,8 +44,9 @@ const char *const STYLE = "Fix sph/soil/refine";
 
 FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxlevel(1),
-    integrator(nullptr), parameters_reported(false), bytes_per_particle(0.0), node_bytes(0.0), last_split(0), last_split_step(-1),
-    total_split(0)
+    strain_at_birth(nullptr), integrator(nullptr), parameters_reported(false),
+    bytes_per_particle(0.0), node_bytes(0.0), last_split(0), last_split_step(-1), total_split(0),
+    last_unbalanced(0), run_unbalanced(0), run_split(0), run_forced(0)
 {
   if (narg < 4) error->all(FLERR, "Illegal fix sph/soil/refine command: expected 'fix ID group sph/soil/refine N keyword value ...'");
   if (!atom->style_match("sph/soil")) error->all(FLERR, "Fix sph/soil/refine requires atom_style sph/soil");
@@ -70,19 +73,33 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     }
   }
 
-  // global output: split this step, total split, particles of the group per level 0..maxlevel
+  // global output: split this step, total split, particles of the group per level
+  // 0..maxlevel, pairs more than one level apart at the last check
   vector_flag = 1;
-  size_vector = 2 + maxlevel + 1;
+  size_vector = 2 + maxlevel + 1 + 1;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
   force_reneighbor = 1;
   next_reneighbor = -1;
+
+  balance.reset(new SPHSoilRefineBalance(lmp));
+  restart_peratom = 1;
+  create_attribute = 1;
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nmax; i++) set_arrays(i);
 }
 
 /* ---------------------------------------------------------------------- */
 
-FixSPHSoilRefine::~FixSPHSoilRefine() = default;
+FixSPHSoilRefine::~FixSPHSoilRefine()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(strain_at_birth);
+}
 
 int FixSPHSoilRefine::setmask()
 {
@@ -224,11 +241,35 @@ void FixSPHSoilRefine::report_parameters()
 
 void FixSPHSoilRefine::end_of_step()
 {
-  const std::vector<int> parents = selection->parents(groupbit, maxlevel);
-  bigint candidates = parents.size(), all_candidates = 0;
-  MPI_Allreduce(&candidates, &all_candidates, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   last_split_step = update->ntimestep;
   last_split = 0;
+  RefineHistory history;
+  history.strain_at_birth = strain_at_birth;
+  std::vector<char> may_split;
+  std::vector<int> parents = selection->parents(groupbit, maxlevel, history, &may_split);
+
+  // the 2:1 balance: needed once a level 2 can exist (at maxlevel 1, or in a group of levels 0
+  // and 1 only, every pair is balanced and the check costs nothing)
+  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  int deepest = 0, deepest_all = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) deepest = MAX(deepest, avec->level[i]);
+  MPI_Allreduce(&deepest, &deepest_all, 1, MPI_INT, MPI_MAX, world);
+  last_unbalanced = 0;
+  if (maxlevel > 1 || deepest_all > 1) {
+    balance->prepare(groupbit, SPHSoil::kernel_support(splitter->kernel_kind()));
+    last_unbalanced = balance->unbalanced();
+    run_unbalanced = MAX(run_unbalanced, last_unbalanced);
+    bigint wanted = parents.size(), wanted_all = 0;
+    MPI_Allreduce(&wanted, &wanted_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    parents = balance->parents(parents, may_split);
+    bigint now = parents.size(), now_all = 0;
+    MPI_Allreduce(&now, &now_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    run_forced += MAX(0, now_all - wanted_all);
+  }
+
+  bigint candidates = parents.size(), all_candidates = 0;
+  MPI_Allreduce(&candidates, &all_candidates, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (all_candidates == 0) return;
   // a split that cannot fit stops here, not in an allocation somewhere in LAMMPS
   const double after = (double) atom->natoms +
@@ -240,11 +281,32 @@ void FixSPHSoilRefine::end_of_step()
                all_candidates, update->ntimestep, after, after * bytes_per_particle / 1e9,
                bytes_per_particle, node_bytes / 1e9);
 
+  const int nlocal_before = atom->nlocal;
   last_split = splitter->split(parents);
+  // the daughters are born now: the parent's slot and the atoms appended after the owned ones
+  auto born = [&](int j) {
+    for (int k = 0; k < 6; k++) strain_at_birth[j][k] = avec->total_strain[j][k];
+  };
+  for (int i : parents) born(i);
+  for (int j = nlocal_before; j < atom->nlocal; j++) born(j);
   total_split += last_split;
+  run_split += last_split;
   reneighbour();
   next_reneighbor = update->ntimestep + 1;
   integrator->particles_refined(STYLE);
+}
+
+/* ----------------------------------------------------------------------
+   what the run did, in the log: splits, those for the balance, pairs out of balance
+------------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::post_run()
+{
+  if (comm->me == 0)
+    utils::logmesg(lmp, "fix sph/soil/refine: {} particles split in this run ({} for the 2:1 "
+                        "balance); the most pairs more than one level apart at a check: {}\n",
+                   run_split, run_forced, run_unbalanced);
+  run_split = run_forced = run_unbalanced = 0;
 }
 
 /* ----------------------------------------------------------------------
@@ -270,13 +332,15 @@ void FixSPHSoilRefine::reneighbour()
 
 /* ----------------------------------------------------------------------
    1: particles split at this step, 2: split since the fix was defined,
-   3..: particles of the group at level 0, 1, ..., maxlevel (the last counts deeper levels too)
+   3..: particles of the group at level 0, 1, ..., maxlevel (the last counts deeper levels too),
+   then the pairs more than one level apart at the last check (before its splits)
 ------------------------------------------------------------------------- */
 
 double FixSPHSoilRefine::compute_vector(int n)
 {
   if (n == 0) return last_split_step == update->ntimestep ? (double) last_split : 0.0;
   if (n == 1) return (double) total_split;
+  if (n == size_vector - 1) return (double) last_unbalanced;
   const int wanted = n - 2;
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   bigint count = 0, all = 0;
@@ -303,4 +367,65 @@ void FixSPHSoilRefine::write_restart(FILE *fp)
 void FixSPHSoilRefine::restart(char *buf)
 {
   total_split = (bigint) reinterpret_cast<double *>(buf)[0];
+}
+
+/* ----------------------------------------------------------------------
+   per atom: the total strain at the particle's birth (0 for one never split, or created)
+------------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::grow_arrays(int nmax)
+{
+  memory->grow(strain_at_birth, nmax, 6, "sph/soil/refine:strain_at_birth");
+}
+
+void FixSPHSoilRefine::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int k = 0; k < 6; k++) strain_at_birth[j][k] = strain_at_birth[i][k];
+}
+
+void FixSPHSoilRefine::set_arrays(int i)
+{
+  for (int k = 0; k < 6; k++) strain_at_birth[i][k] = 0.0;
+}
+
+int FixSPHSoilRefine::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < 6; k++) buf[k] = strain_at_birth[i][k];
+  return 6;
+}
+
+int FixSPHSoilRefine::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < 6; k++) strain_at_birth[nlocal][k] = buf[k];
+  return 6;
+}
+
+int FixSPHSoilRefine::pack_restart(int i, double *buf)
+{
+  buf[0] = 7;
+  for (int k = 0; k < 6; k++) buf[1 + k] = strain_at_birth[i][k];
+  return 7;
+}
+
+void FixSPHSoilRefine::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  for (int k = 0; k < 6; k++) strain_at_birth[nlocal][k] = extra[nlocal][m + 1 + k];
+}
+
+int FixSPHSoilRefine::maxsize_restart()
+{
+  return 7;
+}
+
+int FixSPHSoilRefine::size_restart(int /*nlocal*/)
+{
+  return 7;
+}
+
+double FixSPHSoilRefine::memory_usage()
+{
+  return (double) atom->nmax * 6 * sizeof(double);
 }

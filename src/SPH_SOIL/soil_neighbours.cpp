@@ -9,6 +9,46 @@
 
 namespace SPHSoil {
 
+void SmoothingClassGrids::build(const double *const *x, const double *h_, const std::vector<int> &members,
+                                int dimension, double support)
+{
+  h = h_;
+  dims = dimension == 2 ? 2 : 3;
+  support2 = support * support;
+  classes.clear();
+  double h_max = 0.0;
+  for (int j : members) h_max = std::max(h_max, h[j]);
+  if (!(h_max > 0.0)) return;
+  // class c holds h in (h_max / 2^(c+1), h_max / 2^c]; at most 64 classes (the last takes
+  // the rest)
+  constexpr int MAX_CLASSES = 64;
+  std::vector<int> class_of(members.size());
+  int nclasses = 0;
+  for (std::size_t k = 0; k < members.size(); k++) {
+    const double ratio = h_max / h[members[k]];
+    int c = ratio > 1.0 ? (int) std::floor(std::log2(ratio)) : 0;
+    c = std::min(std::max(c, 0), MAX_CLASSES - 1);
+    class_of[k] = c;
+    nclasses = std::max(nclasses, c + 1);
+  }
+  std::vector<Class> all(nclasses);
+  for (auto &c : all) c.reach = 0.0;
+  for (std::size_t k = 0; k < members.size(); k++) {
+    Class &c = all[class_of[k]];
+    const int j = members[k];
+    c.members.push_back(j);
+    c.positions.push_back(x[j]);
+    c.reach = std::max(c.reach, support * h[j]);
+  }
+  for (auto &c : all) {
+    if (c.members.empty()) continue;
+    c.grid.build(c.positions.data(), (int) c.members.size(), dimension, c.reach);
+    classes.push_back(std::move(c));
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
 void CellGrid::build(const double *const *x, int n, int dimension, double cell)
 {
   dims = dimension == 2 ? 2 : 3;

@@ -84,6 +84,45 @@ class CellGrid {
   }
 };
 
+// Atoms binned by their smoothing length: one CellGrid per class of h within a factor of two
+// (powers of two below the largest h), each in cells of its own reach, so that a search for
+// the atoms whose support reaches a point costs what the atoms near it need, not what the
+// largest h of the run would (a refined particle among level-0 soil and walls).
+class SmoothingClassGrids {
+ public:
+  // bin the atoms `members` (indices into x and h) of x: `support` h is an atom's reach
+  void build(const double *const *x, const double *h, const std::vector<int> &members,
+             int dimension, double support);
+  // call f(j) for every member j with |p - x_j| < max(reach, support h_j) (exactly those:
+  // the distance is tested here)
+  template <class F> void for_each_within(const double *p, double reach, F &&f) const
+  {
+    for (const auto &c : classes) {
+      const double r = reach > c.reach ? reach : c.reach;
+      const double r2 = r * r;
+      c.grid.for_each_near(p, r, [&](int k) {
+        const int j = c.members[k];
+        const double *xj = c.positions[k];
+        double d2 = 0.0;
+        for (int a = 0; a < dims; a++) d2 += (p[a] - xj[a]) * (p[a] - xj[a]);
+        if (d2 < r2 && (d2 < reach * reach || d2 < support2 * h[j] * h[j])) f(j);
+      });
+    }
+  }
+
+ private:
+  struct Class {
+    double reach;                          // support times the largest h of the class
+    std::vector<int> members;              // atom indices
+    std::vector<const double *> positions;
+    CellGrid grid;
+  };
+  std::vector<Class> classes;
+  const double *h = nullptr;
+  double support2 = 0.0;
+  int dims = 2;
+};
+
 class NeighbourList {
  public:
   // build the list of the owned atoms (an empty list for nlocal = 0)

@@ -18,6 +18,13 @@
 
 namespace LAMMPS_NS {
 
+// what a refinement knows of each particle's history: the total strain at its birth (the split
+// that made it; zero for a particle never split), or nullptr where nothing is kept (the
+// sph_soil/refine command: the strain since the start)
+struct RefineHistory {
+  double *const *strain_at_birth = nullptr;
+};
+
 class SPHSoilRefineCriterion : protected Pointers {
  public:
   explicit SPHSoilRefineCriterion(LAMMPS *lmp) : Pointers(lmp) {}
@@ -32,7 +39,7 @@ class SPHSoilRefineCriterion : protected Pointers {
   // check what it needs, at init (e.g. that a variable exists)
   virtual void init(const std::string & /*command*/) {}
   // before each selection (e.g. evaluate a variable); collective
-  virtual void prepare() {}
+  virtual void prepare(const RefineHistory &) {}
   // whether owned particle i wants to be split
   virtual bool wants(int i) const = 0;
   // what it selects, for the log: "strain measure > 0.05"

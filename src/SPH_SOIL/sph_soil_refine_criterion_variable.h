@@ -31,7 +31,7 @@ class SPHSoilRefineCriterionVariable : public SPHSoilRefineCriterion {
     if (!input->variable->atomstyle(ivar))
       error->all(FLERR, "{} criterion v_{}: variable {} must be atom-style", command, name, name);
   }
-  void prepare() override
+  void prepare(const RefineHistory &) override
   {
     values.assign(atom->nlocal > 0 ? atom->nlocal : 1, 0.0);
     input->variable->compute_atom(ivar, 0, values.data(), 1, 0);

@@ -66,17 +66,20 @@ void SPHSoilRefineSelection::init()
   criterion->init(command);
 }
 
-std::vector<int> SPHSoilRefineSelection::parents(int groupbit, int maxlevel)
+std::vector<int> SPHSoilRefineSelection::parents(int groupbit, int maxlevel, const RefineHistory &history,
+                                                 std::vector<char> *may_split)
 {
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
-  criterion->prepare();
+  criterion->prepare(history);
   if (region) region->prematch();
+  if (may_split) may_split->assign(atom->nlocal, 0);
   std::vector<int> selected;
   double **x = atom->x;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     if (maxlevel > 0 && avec->level[i] >= maxlevel) continue;
     if (region && !region->match(x[i][0], x[i][1], x[i][2])) continue;
+    if (may_split) (*may_split)[i] = 1;
     if (criterion->wants(i)) selected.push_back(i);
   }
   return selected;

@@ -27,8 +27,11 @@ class SPHSoilRefineSelection : protected Pointers {
   // at init: the region (it may have been redefined) and the criterion's needs
   void init();
   // owned particles of `groupbit` below `maxlevel` (0: no limit) that the region contains and
-  // the criterion wants; collective (the criterion may evaluate a variable)
-  std::vector<int> parents(int groupbit, int maxlevel);
+  // the criterion wants; collective (the criterion may evaluate a variable). `may_split`, if
+  // given, gets per owned particle whether it may split (group, level, region) whatever the
+  // criterion says.
+  std::vector<int> parents(int groupbit, int maxlevel, const RefineHistory &history = RefineHistory(),
+                           std::vector<char> *may_split = nullptr);
   std::string describe() const;
 
  private:

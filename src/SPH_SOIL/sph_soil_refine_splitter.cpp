@@ -93,12 +93,11 @@ double SPHSoilRefineSplitter::spacing(int i) const
 
 /* ----------------------------------------------------------------------
    CSPM average of the state at `position` over the atoms of the parent's type whose support
-   reaches it (the parent's own included): every such atom lies within the kernel's support
-   at the largest smoothing length, `reach`, of the position; `near` has them binned
+   reaches it (the parent's own included); `near` has the atoms of the parents' types binned
 ------------------------------------------------------------------------- */
 
-void SPHSoilRefineSplitter::interpolate(int parent, const double *position, const CellGrid &near,
-                                  double reach, double *state) const
+void SPHSoilRefineSplitter::interpolate(int parent, const double *position,
+                                        const SmoothingClassGrids &near, double *state) const
 {
   const int dimension = domain->dimension;
   double **x = atom->x;
@@ -107,7 +106,7 @@ void SPHSoilRefineSplitter::interpolate(int parent, const double *position, cons
   const int itype = type[parent];
 
   CspmSum<NSTATE> sum(kernel);
-  near.for_each_near(position, reach, [&](int j) {
+  near.for_each_within(position, 0.0, [&](int j) {
     if (type[j] != itype) return;
     const double dx = position[0] - x[j][0], dy = position[1] - x[j][1],
                  dz = position[2] - x[j][2];
@@ -117,7 +116,6 @@ void SPHSoilRefineSplitter::interpolate(int parent, const double *position, cons
       f[1 + k] = avec->stress[j][k];
       f[7 + k] = avec->total_strain[j][k];
     }
-    // (the kernel is 0 beyond the support: such atoms add nothing)
     sum.add(dimension, rmass[j] / rho[j], std::sqrt(dx * dx + dy * dy + dz * dz), h[j], f);
   });
   if (!sum.result(state)) {
@@ -197,8 +195,10 @@ bigint SPHSoilRefineSplitter::split(const std::vector<int> &parents)
 
 /* ----------------------------------------------------------------------
    every daughter's position and interpolated state, before anything changes: from the owned
-   and ghost atoms in cells of the largest support (the ghosts reach 2 max(h) + skin beyond the
-   subdomain), with the ghosts' state as of now (the strain does not travel every step)
+   and ghost atoms of the parents' types (the ghosts reach 2 max(h) + skin beyond the
+   subdomain), binned by their own h so that a search costs what the atoms near a daughter
+   need (walls, which never refine, and coarse soil elsewhere do not widen it), with the
+   ghosts' state as of now (the strain does not travel every step)
 ------------------------------------------------------------------------- */
 
 void SPHSoilRefineSplitter::plan_daughters(const std::vector<int> &parents, Daughters &daughters)
@@ -210,11 +210,13 @@ void SPHSoilRefineSplitter::plan_daughters(const std::vector<int> &parents, Daug
   const int count = daughter_count(dimension);
   const int nparents = (int) parents.size();
   const int nall = atom->nlocal + atom->nghost;
-  double max_h = 0.0;
-  for (int i = 0; i < nall; i++) max_h = MAX(max_h, avec->smoothing_length[i]);
-  const double reach = kernel_support(kernel) * max_h;
-  CellGrid near;
-  near.build(atom->x, nall, dimension, reach);
+  std::vector<char> parent_type(atom->ntypes + 1, 0);
+  for (int i : parents) parent_type[atom->type[i]] = 1;
+  std::vector<int> members;
+  for (int j = 0; j < nall; j++)
+    if (parent_type[atom->type[j]]) members.push_back(j);
+  SmoothingClassGrids near;
+  near.build(atom->x, avec->smoothing_length, members, dimension, kernel_support(kernel));
 
   daughters.count = count;
   daughters.position.assign((size_t) nparents * count * 3, 0.0);
@@ -226,7 +228,7 @@ void SPHSoilRefineSplitter::plan_daughters(const std::vector<int> &parents, Daug
     for (int k = 0; k < count; k++) {
       double *xd = daughters.position_of(n, k);
       for (int a = 0; a < 3; a++) xd[a] = atom->x[i][a] + offsets[k][a];
-      interpolate(i, xd, near, reach, daughters.state_of(n, k));
+      interpolate(i, xd, near, daughters.state_of(n, k));
     }
   }
 }

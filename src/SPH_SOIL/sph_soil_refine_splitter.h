@@ -64,7 +64,7 @@ class SPHSoilRefineSplitter : protected Pointers {
   const class SPHSoilMaterials *materials;
   SPHSoil::KernelKind kernel;
   double smoothing_length(int i) const;
-  void interpolate(int parent, const double *position, const SPHSoil::CellGrid &near, double reach,
+  void interpolate(int parent, const double *position, const SPHSoil::SmoothingClassGrids &near,
                    double *state) const;
   std::vector<tagint> first_new_tags(const std::vector<int> &parents, bigint &total);
 

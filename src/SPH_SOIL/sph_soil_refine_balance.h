@@ -1,0 +1,46 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package for LAMMPS: the 2:1 level balance of fix sph/soil/refine
+   (soil_refine_balance.h has the rule): the neighbours of the group's owned
+   particles, their ghosts' levels, and the passes repeated over all ranks.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_SOIL_REFINE_BALANCE_H
+#define LMP_SPH_SOIL_REFINE_BALANCE_H
+
+#include "pointers.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class SPHSoilRefineBalance : protected Pointers {
+ public:
+  explicit SPHSoilRefineBalance(LAMMPS *lmp) : Pointers(lmp) {}
+  ~SPHSoilRefineBalance() override;
+
+  // The neighbours among the owned and ghost particles of `groupbit`, and their levels; the
+  // ghosts must be current. Collective. Neighbours for the balance lie within BUFFER times the
+  // kernel's support (`support` h) of the coarser one: the daughters of a split lie up to a
+  // quarter of a spacing from their parent (in 2D, 0.3 h at h = 1.2 d), where a coarse particle
+  // just beyond its support would meet them, and motion between checks does the same.
+  static constexpr double BUFFER = 1.5;
+  void prepare(int groupbit, double support);
+  // pairs of the group within the support of the coarser one and more than one level apart
+  // (after prepare(), all ranks)
+  bigint unbalanced();
+  // the owned particles to split: `wanted` and those the balance adds, less those it calls off;
+  // may_split[i]: owned particle i may split at this check. Collective.
+  std::vector<int> parents(const std::vector<int> &wanted, const std::vector<char> &may_split);
+
+ private:
+  std::vector<int> offsets, partners;
+  std::vector<int> support_offsets, support_partners;    // the neighbours within the support
+  std::vector<int> level, new_level;    // owned and ghost particles
+  double **shared = nullptr;            // levels to and from the ghosts
+  int shared_rows = 0;
+  void share(std::vector<int> &values);    // owned values to the ghosts
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
