@@ -343,6 +343,10 @@ std::vector<BadInput> cases()
         "Illegal fix sph/soil/refine maxlevel 31: must be in 1 to 30");
   error("RefineMaxlevelZero", "patch", {}, "fix r all sph/soil/refine 10 maxlevel 0",
         "Illegal fix sph/soil/refine maxlevel 0: must be in 1 to 30");
+  error("RefineMergeZero", "patch", {}, "fix r all sph/soil/refine 10 merge 0",
+        "Illegal fix sph/soil/refine merge 0: must be > 0");
+  error("RefineMergeWord", "patch", {}, "fix r all sph/soil/refine 10 merge yes",
+        "Illegal fix sph/soil/refine merge yes: must be a hold time > 0 or no");
   error("RefineTimestepTooLargeAfterSplit", "patch",
         {SOIL, "pair_coeff 2 2 wall", "sph_soil/set all strain 0.3 0 0 0 0 0",
          "fix integrate all sph/soil", "fix refine all sph/soil/refine 1", "timestep 1.0e-4"},
@@ -356,7 +360,7 @@ std::vector<BadInput> cases()
         "Illegal fix sph/soil/refine since birth: must be split or start");
   error("RefineUnknownKeyword", "patch", {}, "fix r all sph/soil/refine 10 ratio 2",
         "Illegal fix sph/soil/refine keyword ratio (allowed: criterion, region, threshold, since, separation, "
-        "smoothing, dref, maxlevel)");
+        "smoothing, dref, maxlevel, merge)");
   error("RefineUnknownCriterion", "patch", {}, "fix r all sph/soil/refine 10 criterion stress",
         "Illegal fix sph/soil/refine criterion stress (allowed: strain, all, v_name)");
   error("RefineKeywordOfAnotherCriterion", "patch", {}, "fix r all sph/soil/refine 10 criterion all threshold 0.1",

@@ -159,10 +159,11 @@ TEST_F(Parallel, RefinementWithMigrationAndBalancing)
                            "run 1500 post no"});
 }
 
-// Deep refinement under the 2:1 balance: a zone fixed in space, which the soil flows through,
-// wants particles down to level 3; their coarse neighbours split for the balance. The same
-// levels and state on 1, 2 and 4 ranks, and no pair more than one level apart at any check.
-TEST_F(Parallel, BalancedDeepRefinementWithMigration)
+// Deep refinement under the 2:1 balance, with merging: a zone fixed in space, which the soil
+// flows through, wants particles down to level 3; their coarse neighbours split for the
+// balance; the families the zone has left merge back. The same levels and state on 1, 2 and 4
+// ranks, and no pair more than one level apart at any check.
+TEST_F(Parallel, BalancedDeepRefinementAndMergingWithMigration)
 {
   write_patch();
   expect_same_on_one_rank({"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
@@ -170,11 +171,12 @@ TEST_F(Parallel, BalancedDeepRefinementWithMigration)
                            "pair_coeff 1 1 soil 2650 0.7e6 0.3 0 0 1e12",
                            "fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin",
                            "variable zone atom (x-0.1)^2+(y-0.08)^2<0.015^2",
-                           "fix refine all sph/soil/refine 10 criterion v_zone maxlevel 3",
+                           "fix refine all sph/soil/refine 10 criterion v_zone maxlevel 3 merge 5e-4",
                            "fix balance all balance 50 1.0 shift xy 10 1.0", "thermo 0",
-                           "run 200 post no"});
+                           "run 300 post no"});
   auto refine = lmp->modify->fix[lmp->modify->find_fix("refine")];
   EXPECT_GT(refine->compute_vector(5), 0.0);    // level 3 reached
+  EXPECT_GT(refine->compute_vector(7), 0.0);    // families merged
   HIDE_OUTPUT([&] { command("run 10 post no"); });
   EXPECT_EQ(refine->compute_vector(6), 0.0);    // balanced at the last check
 }

@@ -432,6 +432,75 @@ TEST_F(Refinement, DaughtersDoNotSplitAgainOnTheirParentsStrain)
   EXPECT_EQ(lmp->atom->natoms, 144);
 }
 
+// Merge: a zone that wants particles down to level 3 for a while and then none; with 'merge',
+// the families merge back once quiet for the hold time, one level at a time: mass and linear
+// momentum are conserved to round-off, the stress stays admissible, the levels stay balanced,
+// and the patch ends with its particles of the start (the same IDs). Split-merge cycles over
+// 1000 checks lose no particle.
+TEST_F(Refinement, SiblingsMergeBackConservingMassAndMomentum)
+{
+  auto totals = [&]() {
+    double local[3] = {0.0, 0.0, 0.0}, global[3];
+    for (int i = 0; i < lmp->atom->nlocal; i++) {
+      local[0] += lmp->atom->rmass[i];
+      for (int a = 0; a < 2; a++) local[1 + a] += lmp->atom->rmass[i] * lmp->atom->v[i][a];
+    }
+    MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return std::vector<double>{global[0], global[1], global[2]};
+  };
+  auto admissible = [&]() {
+    auto pair = dynamic_cast<LAMMPS_NS::PairSPHSoil *>(lmp->force->pair);
+    auto avec = soil_avec(lmp);
+    int bad = 0, all = 0;
+    for (int i = 0; i < lmp->atom->nlocal; i++) {
+      const double *s = avec->stress[i];
+      const double scale = std::fabs(s[0]) + std::fabs(s[1]) + std::fabs(s[2]) + 1.0;
+      if (pair->model(lmp->atom->type[i])->yield_function(s) > 1e-12 * scale) bad++;
+    }
+    MPI_Allreduce(&bad, &all, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+    return all == 0;
+  };
+  patch(2, 12, true);
+  HIDE_OUTPUT([&] {
+    command("fix integrate all sph/soil cfl 0.1");
+    command("variable on equal step<60");
+    command("variable zone atom ((x-0.06)^2+(y-0.06)^2<0.02^2)*v_on");
+    command("fix refine all sph/soil/refine 10 criterion v_zone maxlevel 3 merge 2e-4");
+  });
+  const auto before = totals();
+  HIDE_OUTPUT([&] { command("run 60 post no"); });
+  EXPECT_GT(lmp->atom->natoms, 144);
+  EXPECT_GT(fix_vector("refine", 5), 0.0);    // level 3 reached
+  HIDE_OUTPUT([&] { command("run 400 post no"); });
+  const auto after = totals();
+  EXPECT_EQ(lmp->atom->natoms, 144);
+  EXPECT_NEAR(after[0], before[0], 1e-14 * before[0]);
+  for (int a = 1; a < 3; a++) EXPECT_NEAR(after[a], before[a], 1e-13 * before[0] * 0.02);
+  EXPECT_TRUE(admissible());
+  EXPECT_EQ(fix_vector("refine", 6), 0.0);    // balanced
+  EXPECT_GT(fix_vector("refine", 7), 0.0);    // families merged
+  // the IDs of the start
+  tagint local_max = 0, max_tag = 0;
+  for (int i = 0; i < lmp->atom->nlocal; i++) local_max = std::max(local_max, lmp->atom->tag[i]);
+  MPI_Allreduce(&local_max, &max_tag, 1, MPI_LMP_TAGINT, MPI_MAX, MPI_COMM_WORLD);
+  EXPECT_EQ(max_tag, 144);
+
+  // cycles: the zone wants for 20 steps of every 40, checks every 2 steps, 2000 steps
+  HIDE_OUTPUT([&] {
+    command("unfix refine");
+    command("variable on equal (step%40)<20");
+    command("fix refine all sph/soil/refine 2 criterion v_zone maxlevel 2 merge 1e-5");
+    command("run 2000 post no");
+  });
+  EXPECT_GT(fix_vector("refine", 1), 1000.0);
+  EXPECT_GT(fix_vector("refine", 6), 100.0);
+  const auto cycled = totals();
+  EXPECT_NEAR(cycled[0], before[0], 1e-13 * before[0]);
+  // every particle is whole: the count is the start's plus 3 per split less 3 per merge
+  const double splits = fix_vector("refine", 1), merges = fix_vector("refine", 6);
+  EXPECT_EQ((double) lmp->atom->natoms, 144 + 3 * splits - 3 * merges);
+}
+
 TEST_F(Refinement, SameSplitsOnOneAndTwoRanks)
 {
   patch(2, 12, true);

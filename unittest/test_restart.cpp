@@ -94,6 +94,27 @@ TEST_F(Restart, ARefinedRunWithWallsContinuesWithoutPairCoeff)
   expect_same_state(gather_state(lmp), uninterrupted);
 }
 
+// A run with three levels, the 2:1 balance and merging continues exactly after a restart in
+// its middle: the levels, each particle's strain at birth, since when it is quiet and its
+// families travel with the atoms.
+TEST_F(Restart, DeepRefinementWithMergingContinuesExactly)
+{
+  const std::vector<std::string> fixes = {
+      "fix integrate all sph/soil cfl 0.1",
+      "variable zone atom ((x-0.1)^2+(y-0.08)^2<0.02^2)*(step<60)",
+      "fix refine all sph/soil/refine 10 criterion v_zone maxlevel 3 merge 3e-4"};
+  patch();
+  commands(fixes);
+  commands({"run 80 post no", "write_restart merging.restart", "run 150 post no"});
+  const auto uninterrupted = gather_state(lmp);
+  auto refine = lmp->modify->fix[lmp->modify->find_fix("refine")];
+  ASSERT_GT(refine->compute_vector(7), 0.0) << "families should have merged";
+  commands({"clear", "read_restart merging.restart", "neighbor 0.002 bin", "thermo 0"});
+  commands(fixes);
+  commands({"run 150 post no"});
+  expect_same_state(gather_state(lmp), uninterrupted);
+}
+
 // A restart file written before the first run holds no rates of a last step (none was
 // computed): the continued run starts from its set-up's rates, as the uninterrupted one does.
 TEST_F(Restart, AFileWrittenBeforeTheFirstRunContinuesExactly)

@@ -44,7 +44,8 @@ const char *const STYLE = "Fix sph/soil/refine";
 
 FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxlevel(1),
-    strain_at_birth(nullptr), integrator(nullptr), parameters_reported(false),
+    strain_at_birth(nullptr), quiet_since(nullptr), family(nullptr), merge_time(0.0),
+    last_merged(0), total_merged(0), integrator(nullptr), parameters_reported(false),
     bytes_per_particle(0.0), node_bytes(0.0), last_split(0), last_split_step(-1), total_split(0),
     last_unbalanced(0), run_unbalanced(0), run_split(0), run_forced(0)
 {
@@ -67,21 +68,33 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     } else if (keyword == "maxlevel") {
       maxlevel = SPHSoilInput::integer(FLERR, lmp, "fix sph/soil/refine maxlevel", value, 1,
                                        SPHSoil::MAX_LEVEL);
+    } else if (keyword == "merge") {
+      if (std::string(value) == "no")
+        merge_time = 0.0;
+      else if (!utils::is_double(value))
+        error->all(FLERR, "Illegal fix sph/soil/refine merge {}: must be a hold time > 0 or no", value);
+      else
+        merge_time = SPHSoilInput::number(FLERR, lmp, "fix sph/soil/refine merge", value,
+                                          SPHSoilInput::above(0.0));
     } else {
       error->all(FLERR, "Illegal fix sph/soil/refine keyword {} (allowed: {}, {}, "
-                        "maxlevel)", keyword, SPHSoilRefineSelection::keywords(), SPHSoilRefineSplitter::KEYWORDS);
+                        "maxlevel, merge)", keyword, SPHSoilRefineSelection::keywords(), SPHSoilRefineSplitter::KEYWORDS);
     }
   }
 
   // global output: split this step, total split, particles of the group per level
-  // 0..maxlevel, pairs more than one level apart at the last check
+  // 0..maxlevel, pairs more than one level apart at the last check, families merged
   vector_flag = 1;
-  size_vector = 2 + maxlevel + 1 + 1;
+  size_vector = 2 + maxlevel + 1 + 2;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
   force_reneighbor = 1;
   next_reneighbor = -1;
+  if (merge_time > 0.0) {
+    comm_forward = MERGE_ROW;
+    comm_reverse = 1;
+  }
 
   balance.reset(new SPHSoilRefineBalance(lmp));
   restart_peratom = 1;
@@ -99,6 +112,9 @@ FixSPHSoilRefine::~FixSPHSoilRefine()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(strain_at_birth);
+  memory->destroy(quiet_since);
+  memory->destroy(family);
+  memory->destroy(merge_buffer);
 }
 
 int FixSPHSoilRefine::setmask()
@@ -247,6 +263,8 @@ void FixSPHSoilRefine::end_of_step()
   history.strain_at_birth = strain_at_birth;
   std::vector<char> may_split;
   std::vector<int> parents = selection->parents(groupbit, maxlevel, history, &may_split);
+  if (merge_time > 0.0) mark_quiet();
+  last_merged = 0;
 
   // the 2:1 balance: needed once a level 2 can exist (at maxlevel 1, or in a group of levels 0
   // and 1 only, every pair is balanced and the check costs nothing)
@@ -270,7 +288,10 @@ void FixSPHSoilRefine::end_of_step()
 
   bigint candidates = parents.size(), all_candidates = 0;
   MPI_Allreduce(&candidates, &all_candidates, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (all_candidates == 0) return;
+  if (all_candidates == 0) {
+    if (merge_time > 0.0) merge();
+    return;
+  }
   // a split that cannot fit stops here, not in an allocation somewhere in LAMMPS
   const double after = (double) atom->natoms +
       (double) all_candidates * (SPHSoil::daughter_count(domain->dimension) - 1);
@@ -283,17 +304,37 @@ void FixSPHSoilRefine::end_of_step()
 
   const int nlocal_before = atom->nlocal;
   last_split = splitter->split(parents);
-  // the daughters are born now: the parent's slot and the atoms appended after the owned ones
-  auto born = [&](int j) {
-    for (int k = 0; k < 6; k++) strain_at_birth[j][k] = avec->total_strain[j][k];
-  };
-  for (int i : parents) born(i);
-  for (int j = nlocal_before; j < atom->nlocal; j++) born(j);
+  born(parents, nlocal_before);
   total_split += last_split;
   run_split += last_split;
   reneighbour();
   next_reneighbor = update->ntimestep + 1;
   integrator->particles_refined(STYLE);
+  if (merge_time > 0.0) merge();
+}
+
+/* ----------------------------------------------------------------------
+   the daughters of `parents` are born now: the parent's slot and, after the owned atoms of
+   before the split, the others, parent by parent. Their strain at birth, quiet from now, and
+   their family: the parent's ID, which daughter 0 keeps
+------------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::born(const std::vector<int> &parents, int nlocal_before)
+{
+  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  const int others = SPHSoil::daughter_count(domain->dimension) - 1;
+  const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  auto set = [&](int j, tagint parent_tag) {
+    for (int k = 0; k < 6; k++) strain_at_birth[j][k] = avec->total_strain[j][k];
+    quiet_since[j] = now;
+    const int level = avec->level[j];
+    if (level >= 1 && level <= maxlevel) family[j][level - 1] = (double) parent_tag;
+  };
+  for (size_t n = 0; n < parents.size(); n++) {
+    const int i = parents[n];
+    set(i, atom->tag[i]);
+    for (int k = 0; k < others; k++) set(nlocal_before + (int) n * others + k, atom->tag[i]);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -304,9 +345,10 @@ void FixSPHSoilRefine::post_run()
 {
   if (comm->me == 0)
     utils::logmesg(lmp, "fix sph/soil/refine: {} particles split in this run ({} for the 2:1 "
-                        "balance); the most pairs more than one level apart at a check: {}\n",
-                   run_split, run_forced, run_unbalanced);
-  run_split = run_forced = run_unbalanced = 0;
+                        "balance), {} families merged; the most pairs more than one level apart "
+                        "at a check: {}\n",
+                   run_split, run_forced, run_merged, run_unbalanced);
+  run_split = run_forced = run_unbalanced = run_merged = 0;
 }
 
 /* ----------------------------------------------------------------------
@@ -333,14 +375,16 @@ void FixSPHSoilRefine::reneighbour()
 /* ----------------------------------------------------------------------
    1: particles split at this step, 2: split since the fix was defined,
    3..: particles of the group at level 0, 1, ..., maxlevel (the last counts deeper levels too),
-   then the pairs more than one level apart at the last check (before its splits)
+   then the pairs more than one level apart at the last check (before its splits), the families
+   merged since the fix was defined
 ------------------------------------------------------------------------- */
 
 double FixSPHSoilRefine::compute_vector(int n)
 {
   if (n == 0) return last_split_step == update->ntimestep ? (double) last_split : 0.0;
   if (n == 1) return (double) total_split;
-  if (n == size_vector - 1) return (double) last_unbalanced;
+  if (n == size_vector - 2) return (double) last_unbalanced;
+  if (n == size_vector - 1) return (double) total_merged;
   const int wanted = n - 2;
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   bigint count = 0, all = 0;
@@ -364,47 +408,62 @@ void FixSPHSoilRefine::write_restart(FILE *fp)
   fwrite(data, sizeof(double), 1, fp);
 }
 
+// (the families merged are counted from the fix's definition in this input, not kept: files
+// from before merging hold the total split alone, and LAMMPS does not pass the size)
 void FixSPHSoilRefine::restart(char *buf)
 {
   total_split = (bigint) reinterpret_cast<double *>(buf)[0];
 }
 
 /* ----------------------------------------------------------------------
-   per atom: the total strain at the particle's birth (0 for one never split, or created)
+   per atom: the total strain at the particle's birth (0 for one never split, or created),
+   quiet since (-1: not quiet), families (0: unknown)
 ------------------------------------------------------------------------- */
 
 void FixSPHSoilRefine::grow_arrays(int nmax)
 {
   memory->grow(strain_at_birth, nmax, 6, "sph/soil/refine:strain_at_birth");
+  memory->grow(quiet_since, nmax, "sph/soil/refine:quiet_since");
+  memory->grow(family, nmax, maxlevel, "sph/soil/refine:family");
 }
 
 void FixSPHSoilRefine::copy_arrays(int i, int j, int /*delflag*/)
 {
   for (int k = 0; k < 6; k++) strain_at_birth[j][k] = strain_at_birth[i][k];
+  quiet_since[j] = quiet_since[i];
+  for (int l = 0; l < maxlevel; l++) family[j][l] = family[i][l];
 }
 
 void FixSPHSoilRefine::set_arrays(int i)
 {
   for (int k = 0; k < 6; k++) strain_at_birth[i][k] = 0.0;
+  quiet_since[i] = -1.0;
+  for (int l = 0; l < maxlevel; l++) family[i][l] = 0.0;
 }
 
 int FixSPHSoilRefine::pack_exchange(int i, double *buf)
 {
-  for (int k = 0; k < 6; k++) buf[k] = strain_at_birth[i][k];
-  return 6;
+  int m = 0;
+  for (int k = 0; k < 6; k++) buf[m++] = strain_at_birth[i][k];
+  buf[m++] = quiet_since[i];
+  for (int l = 0; l < maxlevel; l++) buf[m++] = family[i][l];
+  return m;
 }
 
 int FixSPHSoilRefine::unpack_exchange(int nlocal, double *buf)
 {
-  for (int k = 0; k < 6; k++) strain_at_birth[nlocal][k] = buf[k];
-  return 6;
+  int m = 0;
+  for (int k = 0; k < 6; k++) strain_at_birth[nlocal][k] = buf[m++];
+  quiet_since[nlocal] = buf[m++];
+  for (int l = 0; l < maxlevel; l++) family[nlocal][l] = buf[m++];
+  return m;
 }
 
+// restart files: the same values; a file of another maxlevel gives the families it has
 int FixSPHSoilRefine::pack_restart(int i, double *buf)
 {
-  buf[0] = 7;
-  for (int k = 0; k < 6; k++) buf[1 + k] = strain_at_birth[i][k];
-  return 7;
+  buf[0] = 1 + per_atom_columns();
+  return 1 + pack_exchange(i, buf + 1);
 }
 
 void FixSPHSoilRefine::unpack_restart(int nlocal, int nth)
@@ -412,20 +471,24 @@ void FixSPHSoilRefine::unpack_restart(int nlocal, int nth)
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  for (int k = 0; k < 6; k++) strain_at_birth[nlocal][k] = extra[nlocal][m + 1 + k];
+  const double *buf = &extra[nlocal][m];
+  const int stored_levels = static_cast<int>(buf[0]) - 1 - 7;
+  for (int k = 0; k < 6; k++) strain_at_birth[nlocal][k] = buf[1 + k];
+  quiet_since[nlocal] = buf[7];
+  for (int l = 0; l < maxlevel; l++) family[nlocal][l] = l < stored_levels ? buf[8 + l] : 0.0;
 }
 
 int FixSPHSoilRefine::maxsize_restart()
 {
-  return 7;
+  return 1 + per_atom_columns();
 }
 
 int FixSPHSoilRefine::size_restart(int /*nlocal*/)
 {
-  return 7;
+  return 1 + per_atom_columns();
 }
 
 double FixSPHSoilRefine::memory_usage()
 {
-  return (double) atom->nmax * 6 * sizeof(double);
+  return (double) atom->nmax * per_atom_columns() * sizeof(double);
 }

@@ -6,9 +6,11 @@
    accumulated strain measure eps_xx^2 + eps_yy^2 + eps_zz^2 exceeds a
    threshold), and whose level is below maxlevel, is split into 4 (2D) or 8
    (3D) daughters, keeping neighbours within one level of each other (2:1
-   balance, sph_soil_refine_balance.h). Per atom it keeps the total strain at
-   each particle's birth, so that a criterion can judge a daughter on what it
-   has done since.
+   balance, sph_soil_refine_balance.h), and with `merge T` merges siblings
+   that have been quiet for a time T back into their parent
+   (fix_sph_soil_refine_merge.cpp). Per atom it keeps the total strain at each
+   particle's birth (a criterion judges a daughter on what it has done since),
+   since when it has been quiet, and its ancestors' IDs (its families).
    See doc/fix_sph_soil_refine.rst.
 ------------------------------------------------------------------------- */
 
@@ -25,6 +27,7 @@ FixStyle(sph/soil/refine,FixSPHSoilRefine);
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -41,7 +44,7 @@ class FixSPHSoilRefine : public Fix {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
-  // per-atom: the total strain at the particle's birth
+  // per-atom: the total strain at the particle's birth, quiet since, families
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
   void set_arrays(int) override;
@@ -52,6 +55,11 @@ class FixSPHSoilRefine : public Fix {
   int maxsize_restart() override;
   int size_restart(int) override;
   double memory_usage() override;
+  // the merge's communication: its flags and state to the ghosts, deletions to the owners
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
 
  protected:
   int maxlevel;          // particles at this level are not split again
@@ -59,6 +67,12 @@ class FixSPHSoilRefine : public Fix {
   std::unique_ptr<class SPHSoilRefineSplitter> splitter;
   std::unique_ptr<class SPHSoilRefineBalance> balance;
   double **strain_at_birth;    // per atom, Voigt
+  double *quiet_since;         // per atom: the time since which it is quiet (< 0: it is not)
+  double **family;             // per atom, per level l = 1..maxlevel (column l - 1): the ID of
+                               // the particle whose split made its ancestor (or itself) of
+                               // level l, which daughter 0 kept; 0: unknown
+  double merge_time;           // merge: siblings quiet for this time merge (0: no merging)
+  bigint last_merged, total_merged;    // families merged at the last check, since defined
   class FixSPHSoil *integrator;
   bool parameters_reported;
   double bytes_per_particle, node_bytes;    // at set-up: a split that would not fit stops
@@ -69,6 +83,18 @@ class FixSPHSoilRefine : public Fix {
   bigint last_unbalanced;     // pairs more than one level apart at the last check, before its splits
   bigint run_unbalanced;      // the most at a check of this run
   bigint run_split, run_forced;    // split in this run; of them, split for the balance only
+
+  int per_atom_columns() const { return 6 + 1 + maxlevel; }
+  void born(const std::vector<int> &parents, int nlocal_before);
+  void mark_quiet();
+  bigint merge();
+  // the merge's per-atom rows (owned and ghosts): fix_sph_soil_refine_merge.cpp
+  static constexpr int MERGE_VALUES = 6 + 6 + 6 + 6 + 6 + 3 + 1;    // what the merge averages
+  static constexpr int MERGE_ROW = 9 + MERGE_VALUES;
+  double **merge_buffer = nullptr;
+  int merge_rows = 0;
+  bigint run_merged = 0;
+  void merge_values(int i, double *values) const;
 
   void reneighbour();
   void report_parameters();

@@ -83,6 +83,46 @@ template <int NVALUES> struct CspmSum {
   }
 };
 
+// The particle that siblings merge back into (doc/theory.rst 5.11): add the siblings one by one.
+// Mass and linear momentum are sums (conserved to round-off), the position the centre of mass,
+// the force the sum (the same acceleration of the centre of mass), the density the total mass
+// over the total volume sum m/rho (volume conserved), and NVALUES further values (stress,
+// strains, rates) mass-averaged. What one particle cannot carry is the siblings' motion about
+// their centre of mass: their angular momentum about it, and their kinetic energy of relative
+// motion.
+template <int NVALUES> struct MergeSum {
+  double mass = 0.0, volume = 0.0;
+  double momentum[3] = {0.0, 0.0, 0.0}, moment[3] = {0.0, 0.0, 0.0}, force[3] = {0.0, 0.0, 0.0};
+  double values[NVALUES] = {};
+  int count = 0;
+
+  void add(double m, double rho, const double *x, const double *v, const double *f, const double *value)
+  {
+    mass += m;
+    volume += m / rho;
+    for (int a = 0; a < 3; a++) {
+      momentum[a] += m * v[a];
+      moment[a] += m * x[a];
+      force[a] += f[a];
+    }
+    for (int k = 0; k < NVALUES; k++) values[k] += m * value[k];
+    count++;
+  }
+  double density() const { return mass / volume; }
+  void position(double *x) const
+  {
+    for (int a = 0; a < 3; a++) x[a] = moment[a] / mass;
+  }
+  void velocity(double *v) const
+  {
+    for (int a = 0; a < 3; a++) v[a] = momentum[a] / mass;
+  }
+  void averages(double *value) const
+  {
+    for (int k = 0; k < NVALUES; k++) value[k] = values[k] / mass;
+  }
+};
+
 }    // namespace SPHSoil
 
 #endif

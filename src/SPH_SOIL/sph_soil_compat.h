@@ -25,7 +25,7 @@
      (whether Atom has nperatom)
    - Domain::find_region() index -> Domain::get_region_by_id()
    - Comm::forward_comm_pair(Pair *) -> forward_comm(Pair *), and reverse likewise
-     (whether the Pair overload compiles)
+     (whether the Pair overload compiles); forward_comm_fix(Fix *) likewise
    - Input::command, the command being executed: protected in 29Sep2021
      (whether it can be read; before, read_restart is told from the atom_style
      command by the first argument of the command in hand)
@@ -53,6 +53,7 @@
 namespace LAMMPS_NS {
 
 class Pair;
+class Fix;
 
 namespace SPHSoilCompat {
 
@@ -143,6 +144,26 @@ namespace detail {
 // before (whether the Pair overload compiles)
 template <class C> void forward_comm_pair(C *comm, Pair *pair) { detail::forward_comm(comm, pair, Preferred()); }
 template <class C> void reverse_comm_pair(C *comm, Pair *pair) { detail::reverse_comm(comm, pair, Preferred()); }
+
+/* ---------------------------------------------------------------------- */
+// A fix's own communication
+
+namespace detail {
+  template <class C, class F> auto forward_comm_fix(C *comm, F *fix, Preferred) -> decltype(comm->forward_comm(fix))
+  {
+    comm->forward_comm(fix);
+  }
+  template <class C, class F> void forward_comm_fix(C *comm, F *fix, Fallback) { comm->forward_comm_fix(fix); }
+  template <class C, class F> auto reverse_comm_fix(C *comm, F *fix, Preferred) -> decltype(comm->reverse_comm(fix))
+  {
+    comm->reverse_comm(fix);
+  }
+  template <class C, class F> void reverse_comm_fix(C *comm, F *fix, Fallback) { comm->reverse_comm_fix(fix); }
+}    // namespace detail
+
+// Comm::forward_comm(Fix *) / reverse_comm(Fix *); forward_comm_fix() / reverse_comm_fix() before
+template <class C> void forward_comm_fix(C *comm, Fix *fix) { detail::forward_comm_fix(comm, fix, Preferred()); }
+template <class C> void reverse_comm_fix(C *comm, Fix *fix) { detail::reverse_comm_fix(comm, fix, Preferred()); }
 
 /* ---------------------------------------------------------------------- */
 // Regions

@@ -23,7 +23,7 @@ SPHSoilRefineBalance::~SPHSoilRefineBalance()
 
 /* ---------------------------------------------------------------------- */
 
-void SPHSoilRefineBalance::prepare(int groupbit, double support)
+void SPHSoilRefineBalance::prepare(int groupbit, double support, double scale)
 {
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
@@ -50,7 +50,7 @@ void SPHSoilRefineBalance::prepare(int groupbit, double support)
   double **x = atom->x;
   for (int i = 0; i < nlocal; i++) {
     if (mask[i] & groupbit)
-      near.for_each_within(x[i], BUFFER * support * h[i], [&](int j) {
+      near.for_each_within(x[i], BUFFER * support * scale * h[i], [&](int j) {
         if (j == i) return;
         partners.push_back(j);
         double r2 = 0.0;

@@ -24,13 +24,27 @@ class SPHSoilRefineBalance : protected Pointers {
   // quarter of a spacing from their parent (in 2D, 0.3 h at h = 1.2 d), where a coarse particle
   // just beyond its support would meet them, and motion between checks does the same.
   static constexpr double BUFFER = 1.5;
-  void prepare(int groupbit, double support);
+  // `scale` widens the owned particles' own reach (the merge: the reach of the particle that
+  // siblings of smoothing length h would merge into, 2h, plus its offset from them)
+  void prepare(int groupbit, double support, double scale = 1.0);
   // pairs of the group within the support of the coarser one and more than one level apart
   // (after prepare(), all ranks)
   bigint unbalanced();
   // the owned particles to split: `wanted` and those the balance adds, less those it calls off;
   // may_split[i]: owned particle i may split at this check. Collective.
   std::vector<int> parents(const std::vector<int> &wanted, const std::vector<char> &may_split);
+  // the finest level among owned particle i's neighbours (its own level if it has none)
+  int finest_neighbour(int i) const
+  {
+    int finest = level[i];
+    for (int k = offsets[i]; k < offsets[i + 1]; k++) finest = level[partners[k]] > finest ? level[partners[k]] : finest;
+    return finest;
+  }
+  // f(j) for owned particle i's neighbours j (owned or ghost)
+  template <class F> void for_each_neighbour(int i, F &&f) const
+  {
+    for (int k = offsets[i]; k < offsets[i + 1]; k++) f(partners[k]);
+  }
 
  private:
   std::vector<int> offsets, partners;

@@ -42,6 +42,9 @@ class SPHSoilRefineCriterion : protected Pointers {
   virtual void prepare(const RefineHistory &) {}
   // whether owned particle i wants to be split
   virtual bool wants(int i) const = 0;
+  // whether owned particle i is quiet enough to merge back (fix sph/soil/refine merge T, the
+  // time it must stay so): by default, when it does not want to split
+  virtual bool quiet(int i, double /*hold_time*/) const { return !wants(i); }
   // what it selects, for the log: "strain measure > 0.05"
   virtual std::string describe() const = 0;
 };

@@ -53,6 +53,14 @@ class SPHSoilRefineCriterionStrain : public SPHSoilRefineCriterion {
       strain[k] = avec->total_strain[i][k] - (strain_at_birth ? strain_at_birth[i][k] : 0.0);
     return SPHSoil::strain_measure(strain) > threshold;
   }
+  // quiet: at its present strain rate it would take more than twice the hold time to reach
+  // the threshold (the measure is a square: a quarter of it in the hold time)
+  bool quiet(int i, double hold_time) const override
+  {
+    double strain[6];
+    for (int k = 0; k < 6; k++) strain[k] = avec->strain_rate[i][k] * hold_time;
+    return SPHSoil::strain_measure(strain) < 0.25 * threshold;
+  }
   std::string describe() const override
   {
     return fmt::format("strain measure > {} (of the strain since {})", threshold,

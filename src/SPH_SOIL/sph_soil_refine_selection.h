@@ -32,6 +32,9 @@ class SPHSoilRefineSelection : protected Pointers {
   // criterion says.
   std::vector<int> parents(int groupbit, int maxlevel, const RefineHistory &history = RefineHistory(),
                            std::vector<char> *may_split = nullptr);
+  // whether owned particle i is quiet enough to merge (after parents(), which prepares the
+  // criterion)
+  bool quiet(int i, double hold_time) const { return criterion->quiet(i, hold_time); }
   std::string describe() const;
 
  private:

@@ -304,6 +304,13 @@ void SPHSoilRefineSplitter::set_daughter(int j, const Parent &parent, const doub
   }
   // a CSPM average of admissible stresses is admissible for one convex yield surface; the
   // return guards against round-off
-  const auto model = materials->model(atom->type[j]);
-  if (model) model->return_to_admissible(avec->stress[j]);
+  return_to_admissible(j);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHSoilRefineSplitter::return_to_admissible(int i) const
+{
+  const auto model = materials->model(atom->type[i]);
+  if (model) model->return_to_admissible(avec->stress[i]);
 }

@@ -56,6 +56,8 @@ class SPHSoilRefineSplitter : protected Pointers {
   // evaluation (fixes: next_reneighbor; commands: the next run's setup does it).
   // Returns the number of parents split on all ranks.
   bigint split(const std::vector<int> &parents);
+  // return owned particle i's stress to its material's admissible set (after an average)
+  void return_to_admissible(int i) const;
 
  private:
   std::string who;
