@@ -266,15 +266,15 @@ void FixSPHSoilRefine::end_of_step()
   if (merge_time > 0.0) mark_quiet();
   last_merged = 0;
 
-  // the 2:1 balance: needed once a level 2 can exist (at maxlevel 1, or in a group of levels 0
-  // and 1 only, every pair is balanced and the check costs nothing)
+  // the 2:1 balance: needed once a particle is refined and a level 2 can exist (at maxlevel 1,
+  // or in a group of levels 0 and 1 only, every pair is balanced and the check costs nothing)
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   int deepest = 0, deepest_all = 0;
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit) deepest = MAX(deepest, avec->level[i]);
   MPI_Allreduce(&deepest, &deepest_all, 1, MPI_INT, MPI_MAX, world);
   last_unbalanced = 0;
-  if (maxlevel > 1 || deepest_all > 1) {
+  if (deepest_all >= 1 && (maxlevel > 1 || deepest_all > 1)) {
     balance->prepare(groupbit, SPHSoil::kernel_support(splitter->kernel_kind()));
     last_unbalanced = balance->unbalanced();
     run_unbalanced = MAX(run_unbalanced, last_unbalanced);

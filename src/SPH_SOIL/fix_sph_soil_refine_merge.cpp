@@ -88,6 +88,13 @@ bigint FixSPHSoilRefine::merge()
   const int nlocal = atom->nlocal;
   const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
 
+  // a family must have been quiet for the hold time: looking four times per hold time is
+  // enough (a merge comes at most a quarter of it late), and spares the checks in between. The
+  // looks are at the first check after each multiple of a quarter of the hold time (a rule of
+  // the time alone: a restarted run looks when the uninterrupted one does)
+  const double quarter = 0.25 * merge_time, since_last_check = nevery * update->dt;
+  if (std::floor(now / quarter) == std::floor((now - since_last_check) / quarter)) return 0;
+
   // candidates: quiet for the hold time, of a known family
   std::vector<char> ready(nlocal, 0);
   int candidates = 0, any = 0;
@@ -102,12 +109,16 @@ bigint FixSPHSoilRefine::merge()
   MPI_Allreduce(&candidates, &any, 1, MPI_INT, MPI_MAX, world);
   if (!any) return 0;
 
-  // no neighbour finer than itself within the reach of the particle it would merge into (one
-  // level coarser: the 2:1 balance holds, and the balance does not split it again at once)
-  const double parent_scale = 1.0 / splitter->smoothing_ratio + 0.5;
-  balance->prepare(groupbit, SPHSoil::kernel_support(splitter->kernel_kind()), parent_scale);
+  // Daughters 0 (which kept their parent's ID) search their neighbourhood: the siblings, and
+  // whether a particle finer than the family lies within the reach of the particle it would
+  // merge into (one level coarser: the 2:1 balance must hold, and the balance must not split
+  // it again at once). That reach, B kappa h_p about the centre of mass, which lies within
+  // about 0.3 h_p of daughter 0, is within (B kappa + 0.3) h_p = (1 + 0.1) B kappa h_p.
+  std::vector<char> searching(nlocal, 0);
   for (int i = 0; i < nlocal; i++)
-    if (ready[i] && balance->finest_neighbour(i) > avec->level[i]) ready[i] = 0;
+    searching[i] = ready[i] && (double) atom->tag[i] == family[i][avec->level[i] - 1];
+  const double parent_scale = 1.1 / splitter->smoothing_ratio;
+  balance->prepare(groupbit, SPHSoil::kernel_support(splitter->kernel_kind()), parent_scale, &searching);
 
   // every atom's row: the owned ones here, the ghosts' by forward communication
   if (atom->nmax > merge_rows) {
@@ -138,7 +149,7 @@ bigint FixSPHSoilRefine::merge()
   for (int i = 0; i < nlocal; i++) {
     const double *own = merge_buffer[i];
     const int level = avec->level[i];
-    if (own[READY] == 0.0 || (double) atom->tag[i] != own[FAMILY]) continue;
+    if (!searching[i] || balance->finest_neighbour(i) > level) continue;
     // the siblings among the neighbours, one image each (the nearest)
     std::map<tagint, int> siblings;
     bool complete = true;

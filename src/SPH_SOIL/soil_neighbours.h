@@ -93,8 +93,8 @@ class SmoothingClassGrids {
   // bin the atoms `members` (indices into x and h) of x: `support` h is an atom's reach
   void build(const double *const *x, const double *h, const std::vector<int> &members,
              int dimension, double support);
-  // call f(j) for every member j with |p - x_j| < max(reach, support h_j) (exactly those:
-  // the distance is tested here)
+  // call f(j, r2) for every member j with |p - x_j| < max(reach, support h_j) (exactly those:
+  // the distance is tested here), r2 = |p - x_j|^2
   template <class F> void for_each_within(const double *p, double reach, F &&f) const
   {
     for (const auto &c : classes) {
@@ -105,7 +105,7 @@ class SmoothingClassGrids {
         const double *xj = c.positions[k];
         double d2 = 0.0;
         for (int a = 0; a < dims; a++) d2 += (p[a] - xj[a]) * (p[a] - xj[a]);
-        if (d2 < r2 && (d2 < reach * reach || d2 < support2 * h[j] * h[j])) f(j);
+        if (d2 < r2 && (d2 < reach * reach || d2 < support2 * h[j] * h[j])) f(j, d2);
       });
     }
   }

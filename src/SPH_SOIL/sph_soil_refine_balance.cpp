@@ -23,7 +23,8 @@ SPHSoilRefineBalance::~SPHSoilRefineBalance()
 
 /* ---------------------------------------------------------------------- */
 
-void SPHSoilRefineBalance::prepare(int groupbit, double support, double scale)
+void SPHSoilRefineBalance::prepare(int groupbit, double support, double scale,
+                                   const std::vector<char> *only)
 {
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
@@ -32,34 +33,56 @@ void SPHSoilRefineBalance::prepare(int groupbit, double support, double scale)
 
   // the ghosts' levels (the level does not travel with the ghosts' borders)
   level.assign(nall, 0);
-  new_level.assign(nall, 0);
-  for (int i = 0; i < nlocal; i++) level[i] = new_level[i] = avec->level[i];
+  for (int i = 0; i < nlocal; i++) level[i] = avec->level[i];
   share(level);
   new_level = level;
 
+  // Only refined particles search (and, for the merge, the particles `only` names): a pair of
+  // level-0 particles can be neither unbalanced nor limit nor force anything, so a level-0
+  // particle needs its refined neighbours only, which find it. The cost follows the refined
+  // zone, not the whole group.
   std::vector<int> members;
   for (int j = 0; j < nall; j++)
     if (mask[j] & groupbit) members.push_back(j);
   const int dimension = domain->dimension;
   SPHSoil::SmoothingClassGrids near;
   near.build(atom->x, h, members, dimension, BUFFER * support);
+  struct Edge {
+    int i, j;
+    bool within_support;
+  };
+  std::vector<Edge> edges;
+  edges.reserve(previous_edges + previous_edges / 8);
+  double **x = atom->x;
+  for (int j : members) {
+    if (only ? j >= nlocal || !(*only)[j] : level[j] < 1) continue;
+    near.for_each_within(x[j], BUFFER * support * scale * h[j], [&](int k, double r2) {
+      if (k == j) return;
+      const double reach = support * MAX(h[j], h[k]);
+      const bool within = r2 < reach * reach;
+      if (j < nlocal) edges.push_back({j, k, within});
+      if (!only && k < nlocal && level[k] < 1) edges.push_back({k, j, within});
+    });
+  }
+  previous_edges = edges.size();
+  // the owned particles' lists (a counting sort of the edges)
   offsets.assign(nlocal + 1, 0);
   support_offsets.assign(nlocal + 1, 0);
-  partners.clear();
-  support_partners.clear();
-  double **x = atom->x;
+  for (const auto &e : edges) {
+    offsets[e.i + 1]++;
+    if (e.within_support) support_offsets[e.i + 1]++;
+  }
   for (int i = 0; i < nlocal; i++) {
-    if (mask[i] & groupbit)
-      near.for_each_within(x[i], BUFFER * support * scale * h[i], [&](int j) {
-        if (j == i) return;
-        partners.push_back(j);
-        double r2 = 0.0;
-        for (int a = 0; a < dimension; a++) r2 += (x[i][a] - x[j][a]) * (x[i][a] - x[j][a]);
-        const double reach = support * MAX(h[i], h[j]);
-        if (r2 < reach * reach) support_partners.push_back(j);
-      });
-    offsets[i + 1] = (int) partners.size();
-    support_offsets[i + 1] = (int) support_partners.size();
+    offsets[i + 1] += offsets[i];
+    support_offsets[i + 1] += support_offsets[i];
+  }
+  partners.resize(edges.size());
+  support_partners.resize(support_offsets[nlocal]);
+  std::vector<int> fill(offsets.begin(), offsets.end() - 1),
+      support_fill(support_offsets.begin(), support_offsets.end() - 1);
+  for (const auto &e : edges) {
+    partners[fill[e.i]++] = e.j;
+    if (e.within_support) support_partners[support_fill[e.i]++] = e.j;
   }
 }
 

@@ -25,8 +25,9 @@ class SPHSoilRefineBalance : protected Pointers {
   // just beyond its support would meet them, and motion between checks does the same.
   static constexpr double BUFFER = 1.5;
   // `scale` widens the owned particles' own reach (the merge: the reach of the particle that
-  // siblings of smoothing length h would merge into, 2h, plus its offset from them)
-  void prepare(int groupbit, double support, double scale = 1.0);
+  // siblings of smoothing length h would merge into, 2h, plus its offset from them); `only`
+  // (the merge) lists the neighbours of these owned particles alone.
+  void prepare(int groupbit, double support, double scale = 1.0, const std::vector<char> *only = nullptr);
   // pairs of the group within the support of the coarser one and more than one level apart
   // (after prepare(), all ranks)
   bigint unbalanced();
@@ -49,6 +50,7 @@ class SPHSoilRefineBalance : protected Pointers {
  private:
   std::vector<int> offsets, partners;
   std::vector<int> support_offsets, support_partners;    // the neighbours within the support
+  size_t previous_edges = 0;                               // (to reserve)
   std::vector<int> level, new_level;    // owned and ghost particles
   double **shared = nullptr;            // levels to and from the ghosts
   int shared_rows = 0;

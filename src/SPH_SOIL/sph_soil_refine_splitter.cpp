@@ -100,23 +100,20 @@ void SPHSoilRefineSplitter::interpolate(int parent, const double *position,
                                         const SmoothingClassGrids &near, double *state) const
 {
   const int dimension = domain->dimension;
-  double **x = atom->x;
   const double *rho = atom->rho, *rmass = atom->rmass, *h = avec->smoothing_length;
   const int *type = atom->type;
   const int itype = type[parent];
 
   CspmSum<NSTATE> sum(kernel);
-  near.for_each_within(position, 0.0, [&](int j) {
+  near.for_each_within(position, 0.0, [&](int j, double r2) {
     if (type[j] != itype) return;
-    const double dx = position[0] - x[j][0], dy = position[1] - x[j][1],
-                 dz = position[2] - x[j][2];
     double f[NSTATE];
     f[0] = rho[j];
     for (int k = 0; k < 6; k++) {
       f[1 + k] = avec->stress[j][k];
       f[7 + k] = avec->total_strain[j][k];
     }
-    sum.add(dimension, rmass[j] / rho[j], std::sqrt(dx * dx + dy * dy + dz * dz), h[j], f);
+    sum.add(dimension, rmass[j] / rho[j], std::sqrt(r2), h[j], f);
   });
   if (!sum.result(state)) {
     // no neighbour reaches the daughter (separation far beyond the support): keep the parent's
