@@ -22,6 +22,7 @@
 #include "soil_refine_split.h"
 #include "sph_soil_refine_balance.h"
 #include "sph_soil_compat.h"
+#include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
 #include "sph_soil_refine_selection.h"
 #include "sph_soil_memory.h"
@@ -97,20 +98,14 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
   }
 
   balance.reset(new SPHSoilRefineBalance(lmp));
-  restart_peratom = 1;
-  create_attribute = 1;
-  grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nmax; i++) set_arrays(i);
+  SPHSoilFixes::keep_per_atom(this, atom);
 }
 
 /* ---------------------------------------------------------------------- */
 
 FixSPHSoilRefine::~FixSPHSoilRefine()
 {
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
+  SPHSoilFixes::keep_per_atom_end(this, atom);
   memory->destroy(strain_at_birth);
   memory->destroy(quiet_since);
   memory->destroy(family);

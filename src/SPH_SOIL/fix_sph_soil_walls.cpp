@@ -7,6 +7,7 @@
 #include "atom.h"
 #include "memory.h"
 #include "soil_wall_friction.h"
+#include "sph_soil_fixes.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -17,18 +18,12 @@ using namespace FixConst;
 FixSPHSoilWalls::FixSPHSoilWalls(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), accelerations(nullptr), pressures(nullptr)
 {
-  restart_peratom = 1;
-  create_attribute = 1;
-  grow_arrays(atom->nmax);
-  atom->add_callback(Atom::GROW);
-  atom->add_callback(Atom::RESTART);
-  for (int i = 0; i < atom->nmax; i++) set_arrays(i);
+  SPHSoilFixes::keep_per_atom(this, atom);
 }
 
 FixSPHSoilWalls::~FixSPHSoilWalls()
 {
-  atom->delete_callback(id, Atom::GROW);
-  atom->delete_callback(id, Atom::RESTART);
+  SPHSoilFixes::keep_per_atom_end(this, atom);
   memory->destroy(accelerations);
   memory->destroy(pressures);
 }

@@ -27,6 +27,24 @@ namespace SPHSoilFixes {
 // the name under which fix sph/soil answers extract()
 constexpr const char *INTEGRATOR = "sph_soil_integrator";
 
+// A fix's per-atom arrays, the LAMMPS way: grown with the atoms, copied and exchanged with
+// them, set for new atoms, and kept in restart files. Call from the fix's constructor (LAMMPS
+// registers the fix being created) and keep_per_atom_end() from its destructor.
+inline void keep_per_atom(Fix *fix, Atom *atom)
+{
+  fix->restart_peratom = 1;
+  fix->create_attribute = 1;
+  fix->grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nmax; i++) fix->set_arrays(i);
+}
+inline void keep_per_atom_end(Fix *fix, Atom *atom)
+{
+  atom->delete_callback(fix->id, Atom::GROW);
+  atom->delete_callback(fix->id, Atom::RESTART);
+}
+
 inline bool sets_gravity(Fix *fix)
 {
   int dim = 0;
