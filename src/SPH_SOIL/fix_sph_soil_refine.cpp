@@ -21,6 +21,7 @@
 #include "soil_refine_error.h"
 #include "soil_refine_split.h"
 #include "sph_soil_refine_balance.h"
+#include "sph_soil_refine_merger.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
@@ -92,12 +93,12 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
   force_reneighbor = 1;
   next_reneighbor = -1;
+  balance.reset(new SPHSoilRefineBalance(lmp));
   if (merge_time > 0.0) {
-    comm_forward = MERGE_ROW;
+    merger.reset(new SPHSoilRefineMerger(lmp, merge_time, *balance, *splitter));
+    comm_forward = SPHSoilRefineMerger::MERGE_ROW;
     comm_reverse = 1;
   }
-
-  balance.reset(new SPHSoilRefineBalance(lmp));
   SPHSoilFixes::keep_per_atom(this, atom);
 }
 
@@ -109,7 +110,6 @@ FixSPHSoilRefine::~FixSPHSoilRefine()
   memory->destroy(strain_at_birth);
   memory->destroy(quiet_since);
   memory->destroy(family);
-  memory->destroy(merge_buffer);
 }
 
 int FixSPHSoilRefine::setmask()
@@ -485,5 +485,57 @@ int FixSPHSoilRefine::size_restart(int /*nlocal*/)
 
 double FixSPHSoilRefine::memory_usage()
 {
-  return (double) atom->nmax * per_atom_columns() * sizeof(double);
+  return (double) atom->nmax * per_atom_columns() * sizeof(double) + (merger ? merger->memory_usage() : 0.0);
+}
+
+/* ----------------------------------------------------------------------
+   merging (merge T, sph_soil_refine_merger.h): at a check, before its splits, since when each
+   particle of the group is quiet; after them, the merges
+------------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::mark_quiet()
+{
+  const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    if (!selection->quiet(i, merge_time))
+      quiet_since[i] = -1.0;
+    else if (quiet_since[i] < 0.0)
+      quiet_since[i] = now;
+  }
+}
+
+void FixSPHSoilRefine::merge()
+{
+  RefineState state;
+  state.strain_at_birth = strain_at_birth;
+  state.quiet_since = quiet_since;
+  state.family = family;
+  const bigint merged = merger->merge(this, state, groupbit, maxlevel, nevery);
+  if (merged == 0) return;
+  reneighbour();
+  next_reneighbor = update->ntimestep + 1;
+  last_merged = merged;
+  total_merged += merged;
+  run_merged += merged;
+}
+
+int FixSPHSoilRefine::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  return merger->pack_forward_comm(n, list, buf);
+}
+
+void FixSPHSoilRefine::unpack_forward_comm(int n, int first, double *buf)
+{
+  merger->unpack_forward_comm(n, first, buf);
+}
+
+int FixSPHSoilRefine::pack_reverse_comm(int n, int first, double *buf)
+{
+  return merger->pack_reverse_comm(n, first, buf);
+}
+
+void FixSPHSoilRefine::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  merger->unpack_reverse_comm(n, list, buf);
 }

@@ -8,7 +8,7 @@
    (3D) daughters, keeping neighbours within one level of each other (2:1
    balance, sph_soil_refine_balance.h), and with `merge T` merges siblings
    that have been quiet for a time T back into their parent
-   (fix_sph_soil_refine_merge.cpp). Per atom it keeps the total strain at each
+   (sph_soil_refine_merger.h). Per atom it keeps the total strain at each
    particle's birth (a criterion judges a daughter on what it has done since),
    since when it has been quiet, and its ancestors' IDs (its families).
    See doc/fix_sph_soil_refine.rst.
@@ -87,14 +87,9 @@ class FixSPHSoilRefine : public Fix {
   int per_atom_columns() const { return 6 + 1 + maxlevel; }
   void born(const std::vector<int> &parents, int nlocal_before);
   void mark_quiet();
-  bigint merge();
-  // the merge's per-atom rows (owned and ghosts): fix_sph_soil_refine_merge.cpp
-  static constexpr int MERGE_VALUES = 6 + 6 + 6 + 6 + 6 + 3 + 1;    // what the merge averages
-  static constexpr int MERGE_ROW = 9 + MERGE_VALUES;
-  double **merge_buffer = nullptr;
-  int merge_rows = 0;
+  void merge();
+  std::unique_ptr<class SPHSoilRefineMerger> merger;    // with merge T
   bigint run_merged = 0;
-  void merge_values(int i, double *values) const;
 
   void reneighbour();
   void report_parameters();

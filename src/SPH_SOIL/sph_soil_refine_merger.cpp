@@ -1,5 +1,5 @@
 /* ----------------------------------------------------------------------
-   SPH_SOIL package for LAMMPS: fix sph/soil/refine, merging (derefinement).
+   SPH_SOIL package for LAMMPS: merging (derefinement) for fix sph/soil/refine.
    doc/theory.rst section 5.11.
 
    Siblings (the 4 or 8 daughters of one split) merge back into one particle
@@ -13,7 +13,9 @@
    others' owners delete them (a reverse communication of flags).
 ------------------------------------------------------------------------- */
 
-#include "fix_sph_soil_refine.h"
+#include "sph_soil_refine_merger.h"
+
+#include "fix.h"
 
 #include "atom.h"
 #include "atom_vec_sph_soil.h"
@@ -42,20 +44,9 @@ namespace {
 enum { READY = 0, FAMILY = 1, LEVEL = 2, FORCE = 3, VELOCITY = 6, VALUES = 9 };
 }    // namespace
 
-/* ----------------------------------------------------------------------
-   at a check, before its splits: since when each particle of the group is quiet
-------------------------------------------------------------------------- */
-
-void FixSPHSoilRefine::mark_quiet()
+SPHSoilRefineMerger::~SPHSoilRefineMerger()
 {
-  const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    if (!selection->quiet(i, merge_time))
-      quiet_since[i] = -1.0;
-    else if (quiet_since[i] < 0.0)
-      quiet_since[i] = now;
-  }
+  memory->destroy(merge_buffer);
 }
 
 /* ----------------------------------------------------------------------
@@ -64,13 +55,13 @@ void FixSPHSoilRefine::mark_quiet()
    changes at the rate of the siblings' together)
 ------------------------------------------------------------------------- */
 
-void FixSPHSoilRefine::merge_values(int i, double *values) const
+void SPHSoilRefineMerger::merge_values(int i, double *values) const
 {
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   int m = 0;
   for (int k = 0; k < 6; k++) values[m++] = avec->stress[i][k];
   for (int k = 0; k < 6; k++) values[m++] = avec->total_strain[i][k];
-  for (int k = 0; k < 6; k++) values[m++] = strain_at_birth[i][k];
+  for (int k = 0; k < 6; k++) values[m++] = state.strain_at_birth[i][k];
   for (int k = 0; k < 6; k++) values[m++] = avec->stress_rate[i][k];
   for (int k = 0; k < 6; k++) values[m++] = avec->strain_rate[i][k];
   for (int k = 0; k < 3; k++) values[m++] = avec->spin[i][k];
@@ -79,11 +70,15 @@ void FixSPHSoilRefine::merge_values(int i, double *values) const
 
 /* ----------------------------------------------------------------------
    merge the families that may; the ghosts must be current (after a reneighbouring).
-   Returns the families merged on all ranks. Collective.
+   Returns the families merged on all ranks; if any, the ghosts are gone (the caller
+   reneighbours). Collective.
 ------------------------------------------------------------------------- */
 
-bigint FixSPHSoilRefine::merge()
+bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineState &state_now, int groupbit, int maxlevel,
+                                  int nevery)
 {
+  state = state_now;
+  double **family = state.family, *quiet_since = state.quiet_since, **strain_at_birth = state.strain_at_birth;
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int nlocal = atom->nlocal;
   const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
@@ -117,8 +112,8 @@ bigint FixSPHSoilRefine::merge()
   std::vector<char> searching(nlocal, 0);
   for (int i = 0; i < nlocal; i++)
     searching[i] = ready[i] && (double) atom->tag[i] == family[i][avec->level[i] - 1];
-  const double parent_scale = 1.1 / splitter->smoothing_ratio;
-  balance->prepare(groupbit, SPHSoil::kernel_support(splitter->kernel_kind()), parent_scale, &searching);
+  const double parent_scale = 1.1 / splitter.smoothing_ratio;
+  balance.prepare(groupbit, SPHSoil::kernel_support(splitter.kernel_kind()), parent_scale, &searching);
 
   // every atom's row: the owned ones here, the ghosts' by forward communication
   if (atom->nmax > merge_rows) {
@@ -138,7 +133,7 @@ bigint FixSPHSoilRefine::merge()
     }
     merge_values(i, row + VALUES);
   }
-  SPHSoilCompat::forward_comm_fix(comm, this);
+  SPHSoilCompat::forward_comm_fix(comm, fix);
 
   // the owners of daughter 0 decide and merge
   const int nall = nlocal + atom->nghost;
@@ -149,7 +144,7 @@ bigint FixSPHSoilRefine::merge()
   for (int i = 0; i < nlocal; i++) {
     const double *own = merge_buffer[i];
     const int level = avec->level[i];
-    if (!searching[i] || balance->finest_neighbour(i) > level) continue;
+    if (!searching[i] || balance.finest_neighbour(i) > level) continue;
     // the siblings among the neighbours, one image each (the nearest)
     std::map<tagint, int> siblings;
     bool complete = true;
@@ -158,7 +153,7 @@ bigint FixSPHSoilRefine::merge()
       for (int a = 0; a < domain->dimension; a++) r2 += (x[k][a] - p[a]) * (x[k][a] - p[a]);
       return r2;
     };
-    balance->for_each_neighbour(i, [&](int j) {
+    balance.for_each_neighbour(i, [&](int j) {
       const double *row = merge_buffer[j];
       if ((int) row[LEVEL] != level || row[FAMILY] != own[FAMILY]) return;
       if (row[READY] == 0.0) complete = false;
@@ -180,7 +175,7 @@ bigint FixSPHSoilRefine::merge()
     // smoothing length of the centre of mass
     double centre[3];
     sum.position(centre);
-    const double parent_h = avec->smoothing_length[i] / splitter->smoothing_ratio;
+    const double parent_h = avec->smoothing_length[i] / splitter.smoothing_ratio;
     bool together = distance2(i, centre) <= parent_h * parent_h;
     for (const auto &s : siblings) together = together && distance2(s.second, centre) <= parent_h * parent_h;
     if (!together) continue;
@@ -204,7 +199,7 @@ bigint FixSPHSoilRefine::merge()
     for (int k = 0; k < 6; k++) avec->strain_rate[i][k] = values[m++];
     for (int k = 0; k < 3; k++) avec->spin[i][k] = values[m++];
     atom->drho[i] = values[m++] * atom->rho[i];
-    splitter->return_to_admissible(i);
+    splitter.return_to_admissible(i);
     avec->smoothing_length[i] = parent_h;
     avec->level[i] = level - 1;
     family[i][level - 1] = 0.0;
@@ -219,7 +214,7 @@ bigint FixSPHSoilRefine::merge()
 
   // the siblings' owners delete them (the flags of ghosts travel back to their owners)
   for (int j = 0; j < nall; j++) merge_buffer[j][0] = to_delete[j];
-  SPHSoilCompat::reverse_comm_fix(comm, this);
+  SPHSoilCompat::reverse_comm_fix(comm, fix);
   std::vector<char> gone(nlocal);
   for (int i = 0; i < nlocal; i++) gone[i] = merge_buffer[i][0] != 0.0;
   atom->nghost = 0;
@@ -242,11 +237,6 @@ bigint FixSPHSoilRefine::merge()
     atom->map_init();
     atom->map_set();
   }
-  reneighbour();
-  next_reneighbor = update->ntimestep + 1;
-  last_merged = all;
-  total_merged += all;
-  run_merged += all;
   return all;
 }
 
@@ -254,7 +244,7 @@ bigint FixSPHSoilRefine::merge()
    the merge's communication: rows to the ghosts, deletion flags back to the owners
 ------------------------------------------------------------------------- */
 
-int FixSPHSoilRefine::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+int SPHSoilRefineMerger::pack_forward_comm(int n, int *list, double *buf)
 {
   int m = 0;
   for (int k = 0; k < n; k++)
@@ -262,21 +252,21 @@ int FixSPHSoilRefine::pack_forward_comm(int n, int *list, double *buf, int /*pbc
   return m;
 }
 
-void FixSPHSoilRefine::unpack_forward_comm(int n, int first, double *buf)
+void SPHSoilRefineMerger::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int i = first; i < first + n; i++)
     for (int c = 0; c < MERGE_ROW; c++) merge_buffer[i][c] = buf[m++];
 }
 
-int FixSPHSoilRefine::pack_reverse_comm(int n, int first, double *buf)
+int SPHSoilRefineMerger::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int i = first; i < first + n; i++) buf[m++] = merge_buffer[i][0];
   return m;
 }
 
-void FixSPHSoilRefine::unpack_reverse_comm(int n, int *list, double *buf)
+void SPHSoilRefineMerger::unpack_reverse_comm(int n, int *list, double *buf)
 {
   for (int k = 0; k < n; k++)
     if (buf[k] != 0.0) merge_buffer[list[k]][0] = 1.0;

@@ -1,0 +1,66 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package for LAMMPS: merging (derefinement) for fix sph/soil/refine.
+   doc/theory.rst section 5.11; the fix holds the per-atom state (RefineState)
+   and hands its communication callbacks to the merger.
+
+   Siblings (the 4 or 8 daughters of one split) merge back into one particle
+   when all of them have been quiet for the hold time, are complete, lie within
+   their parent's smoothing length of their centre of mass, and no particle
+   finer than they are lies within the merged particle's reach (the 2:1 balance
+   holds). The owner of daughter 0 decides and writes the merged particle into
+   daughter 0's slot; the others' owners delete them.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_SOIL_REFINE_MERGER_H
+#define LMP_SPH_SOIL_REFINE_MERGER_H
+
+#include "pointers.h"
+
+namespace LAMMPS_NS {
+
+// the per-atom state of fix sph/soil/refine that a merge reads and writes
+struct RefineState {
+  double **strain_at_birth = nullptr;    // Voigt
+  double *quiet_since = nullptr;         // the time since which it is quiet (< 0: not)
+  double **family = nullptr;             // per level l = 1..maxlevel (column l - 1): the ID of
+                                         // the particle whose split made it or its ancestor
+};
+
+class SPHSoilRefineMerger : protected Pointers {
+ public:
+  SPHSoilRefineMerger(LAMMPS *lmp, double hold_time, class SPHSoilRefineBalance &balance,
+                      class SPHSoilRefineSplitter &splitter) :
+      Pointers(lmp), merge_time(hold_time), balance(balance), splitter(splitter)
+  {
+  }
+  ~SPHSoilRefineMerger() override;
+
+  // the values a merge mass-averages per atom, and the row each atom sends to the ghosts
+  static constexpr int MERGE_VALUES = 6 + 6 + 6 + 6 + 6 + 3 + 1;
+  static constexpr int MERGE_ROW = 9 + MERGE_VALUES;
+
+  // Merge the families of `groupbit` that may, at a check of a fix every `nevery` steps whose
+  // communication callbacks call this object's; the ghosts must be current. Returns the
+  // families merged on all ranks; if any, the ghosts are gone (the caller reneighbours).
+  // Collective.
+  bigint merge(class Fix *fix, const RefineState &state, int groupbit, int maxlevel, int nevery);
+
+  int pack_forward_comm(int n, int *list, double *buf);
+  void unpack_forward_comm(int n, int first, double *buf);
+  int pack_reverse_comm(int n, int first, double *buf);
+  void unpack_reverse_comm(int n, int *list, double *buf);
+  double memory_usage() const { return (double) merge_rows * MERGE_ROW * sizeof(double); }
+
+ private:
+  double merge_time;
+  SPHSoilRefineBalance &balance;
+  SPHSoilRefineSplitter &splitter;
+  RefineState state;
+  double **merge_buffer = nullptr;    // the rows of owned atoms and ghosts
+  int merge_rows = 0;
+  void merge_values(int i, double *values) const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
