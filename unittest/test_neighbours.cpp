@@ -239,3 +239,41 @@ TEST(NeighbourList, FineParticlesListTheNeighboursOfTheirOwnSmoothingLength)
   EXPECT_NEAR(counts[0] / fine_count, pi * std::pow(2.4 + 0.1, 2) / 2, 1.5);
   EXPECT_NEAR(counts[1] / coarse_count, pi * std::pow(2.4 + 0.1, 2) / 2, 1.5);
 }
+
+// The atoms binned by smoothing length: a search returns exactly the atoms within the given
+// reach or within their own support, with their squared distance, whatever the mix of h
+TEST(Neighbours, SmoothingClassGridsFindExactlyTheAtomsThatReach)
+{
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> position(0.0, 1.0);
+  const int n = 600;
+  std::vector<std::vector<double>> xs(n, std::vector<double>(3, 0.0));
+  std::vector<const double *> x(n);
+  std::vector<double> h(n);
+  std::vector<int> members;
+  for (int i = 0; i < n; i++) {
+    xs[i][0] = position(random);
+    xs[i][1] = position(random);
+    x[i] = xs[i].data();
+    h[i] = 0.02 * std::ldexp(1.0, -(i % 4));    // four levels
+    if (i % 5 != 0) members.push_back(i);       // not every atom is a member
+  }
+  SPHSoil::SmoothingClassGrids grids;
+  const double support = 2.0;
+  grids.build(x.data(), h.data(), members, 2, support);
+  for (int p = 0; p < 50; p++) {
+    const double *point = x[p];
+    const double reach = (p % 3) * 0.01;
+    std::set<int> found, expected;
+    grids.for_each_within(point, reach, [&](int j, double r2) {
+      const double dx = point[0] - x[j][0], dy = point[1] - x[j][1];
+      EXPECT_NEAR(r2, dx * dx + dy * dy, 1e-15);
+      found.insert(j);
+    });
+    for (int j : members) {
+      const double r = std::hypot(point[0] - x[j][0], point[1] - x[j][1]);
+      if (r < std::max(reach, support * h[j])) expected.insert(j);
+    }
+    EXPECT_EQ(found, expected) << "point " << p;
+  }
+}

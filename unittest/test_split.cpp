@@ -74,3 +74,44 @@ TEST(Split, CspmIsAWeightedAverage)
   empty.add(2, 1.0, 2.5, 1.0, &a);
   EXPECT_FALSE(empty.result(&out));
 }
+
+// The merged particle of a family: mass, momentum, force and volume are the sums, the position
+// the centre of mass, other values the mass averages; a constant field stays constant
+TEST(Split, MergeSumConservesMassMomentumAndVolume)
+{
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(0.5, 1.5);
+  MergeSum<2> sum;
+  double mass = 0.0, volume = 0.0, momentum[3] = {0, 0, 0}, moment[3] = {0, 0, 0}, force[3] = {0, 0, 0};
+  double weighted = 0.0;
+  for (int k = 0; k < 8; k++) {
+    const double m = uniform(random), rho = 2000.0 * uniform(random);
+    const double x[3] = {uniform(random), uniform(random), uniform(random)};
+    const double v[3] = {uniform(random) - 1.0, uniform(random), -uniform(random)};
+    const double f[3] = {uniform(random), -uniform(random), uniform(random)};
+    const double value[2] = {-3.5, uniform(random)};
+    sum.add(m, rho, x, v, f, value);
+    mass += m;
+    volume += m / rho;
+    weighted += m * value[1];
+    for (int a = 0; a < 3; a++) {
+      momentum[a] += m * v[a];
+      moment[a] += m * x[a];
+      force[a] += f[a];
+    }
+  }
+  EXPECT_EQ(sum.count, 8);
+  EXPECT_DOUBLE_EQ(sum.mass, mass);
+  EXPECT_DOUBLE_EQ(sum.mass / sum.density(), volume);
+  double x[3], v[3], values[2];
+  sum.position(x);
+  sum.velocity(v);
+  sum.averages(values);
+  for (int a = 0; a < 3; a++) {
+    EXPECT_NEAR(sum.mass * v[a], momentum[a], 1e-14);
+    EXPECT_NEAR(x[a], moment[a] / mass, 1e-15);
+    EXPECT_DOUBLE_EQ(sum.force[a], force[a]);
+  }
+  EXPECT_NEAR(values[0], -3.5, 1e-15);
+  EXPECT_NEAR(values[1], weighted / mass, 1e-15);
+}

@@ -500,7 +500,7 @@ void FixSPHSoil::write_restart(FILE *fp)
     for (int i = 0; i < atom->nlocal; i++)
       if (integrated(i)) save_rates(i);
   double list[3] = {-(double) RESTART_FORMAT,
-                    update->atime + (update->ntimestep - update->atimestep) * update->dt,
+                    SPHSoilFixes::elapsed_time(update),
                     (double) update->ntimestep};
   if (comm->me == 0) {
     int size = sizeof(list);

@@ -47,7 +47,7 @@ const char *const STYLE = "Fix sph/soil/refine";
 FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxlevel(1),
     strain_at_birth(nullptr), quiet_since(nullptr), family(nullptr), merge_time(0.0),
-    last_merged(0), total_merged(0), integrator(nullptr), parameters_reported(false),
+    total_merged(0), integrator(nullptr), parameters_reported(false),
     bytes_per_particle(0.0), node_bytes(0.0), last_split(0), last_split_step(-1), total_split(0),
     last_unbalanced(0), run_unbalanced(0), run_split(0), run_forced(0)
 {
@@ -254,12 +254,9 @@ void FixSPHSoilRefine::end_of_step()
 {
   last_split_step = update->ntimestep;
   last_split = 0;
-  RefineHistory history;
-  history.strain_at_birth = strain_at_birth;
   std::vector<char> may_split;
-  std::vector<int> parents = selection->parents(groupbit, maxlevel, history, &may_split);
+  std::vector<int> parents = selection->parents(groupbit, maxlevel, history(), &may_split);
   if (merge_time > 0.0) mark_quiet();
-  last_merged = 0;
 
   // the 2:1 balance: needed once a particle is refined and a level 2 can exist (at maxlevel 1,
   // or in a group of levels 0 and 1 only, every pair is balanced and the check costs nothing)
@@ -318,7 +315,7 @@ void FixSPHSoilRefine::born(const std::vector<int> &parents, int nlocal_before)
 {
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int others = SPHSoil::daughter_count(domain->dimension) - 1;
-  const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  const double now = SPHSoilFixes::elapsed_time(update);
   auto set = [&](int j, tagint parent_tag) {
     for (int k = 0; k < 6; k++) strain_at_birth[j][k] = avec->total_strain[j][k];
     quiet_since[j] = now;
@@ -467,10 +464,11 @@ void FixSPHSoilRefine::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   const double *buf = &extra[nlocal][m];
-  const int stored_levels = static_cast<int>(buf[0]) - 1 - 7;
+  // (the layout of pack_exchange() after the count: strain at birth, quiet since, families)
+  const int stored_levels = static_cast<int>(buf[0]) - 1 - per_atom_columns() + maxlevel;
   for (int k = 0; k < 6; k++) strain_at_birth[nlocal][k] = buf[1 + k];
-  quiet_since[nlocal] = buf[7];
-  for (int l = 0; l < maxlevel; l++) family[nlocal][l] = l < stored_levels ? buf[8 + l] : 0.0;
+  quiet_since[nlocal] = buf[1 + 6];
+  for (int l = 0; l < maxlevel; l++) family[nlocal][l] = l < stored_levels ? buf[1 + 7 + l] : 0.0;
 }
 
 int FixSPHSoilRefine::maxsize_restart()
@@ -495,7 +493,7 @@ double FixSPHSoilRefine::memory_usage()
 
 void FixSPHSoilRefine::mark_quiet()
 {
-  const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  const double now = SPHSoilFixes::elapsed_time(update);
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     if (!selection->quiet(i, merge_time))
@@ -507,15 +505,10 @@ void FixSPHSoilRefine::mark_quiet()
 
 void FixSPHSoilRefine::merge()
 {
-  RefineState state;
-  state.strain_at_birth = strain_at_birth;
-  state.quiet_since = quiet_since;
-  state.family = family;
-  const bigint merged = merger->merge(this, state, groupbit, maxlevel, nevery);
+  const bigint merged = merger->merge(this, history(), groupbit, maxlevel, nevery);
   if (merged == 0) return;
   reneighbour();
   next_reneighbor = update->ntimestep + 1;
-  last_merged = merged;
   total_merged += merged;
   run_merged += merged;
 }

@@ -24,6 +24,7 @@ FixStyle(sph/soil/refine,FixSPHSoilRefine);
 #define LMP_FIX_SPH_SOIL_REFINE_H
 
 #include "fix.h"
+#include "sph_soil_refine_criterion.h"
 
 #include <memory>
 #include <string>
@@ -66,13 +67,10 @@ class FixSPHSoilRefine : public Fix {
   std::unique_ptr<class SPHSoilRefineSelection> selection;    // criterion, region
   std::unique_ptr<class SPHSoilRefineSplitter> splitter;
   std::unique_ptr<class SPHSoilRefineBalance> balance;
-  double **strain_at_birth;    // per atom, Voigt
-  double *quiet_since;         // per atom: the time since which it is quiet (< 0: it is not)
-  double **family;             // per atom, per level l = 1..maxlevel (column l - 1): the ID of
-                               // the particle whose split made its ancestor (or itself) of
-                               // level l, which daughter 0 kept; 0: unknown
+  // per atom: the history of RefineHistory (sph_soil_refine_criterion.h)
+  double **strain_at_birth, *quiet_since, **family;
   double merge_time;           // merge: siblings quiet for this time merge (0: no merging)
-  bigint last_merged, total_merged;    // families merged at the last check, since defined
+  bigint total_merged;         // families merged since the fix was defined
   class FixSPHSoil *integrator;
   bool parameters_reported;
   double bytes_per_particle, node_bytes;    // at set-up: a split that would not fit stops
@@ -85,6 +83,14 @@ class FixSPHSoilRefine : public Fix {
   bigint run_split, run_forced;    // split in this run; of them, split for the balance only
 
   int per_atom_columns() const { return 6 + 1 + maxlevel; }
+  RefineHistory history() const
+  {
+    RefineHistory h;    // (not an aggregate in C++11, where LAMMPS 29Sep2021 compiles)
+    h.strain_at_birth = strain_at_birth;
+    h.quiet_since = quiet_since;
+    h.family = family;
+    return h;
+  }
   void born(const std::vector<int> &parents, int nlocal_before);
   void mark_quiet();
   void merge();

@@ -17,6 +17,7 @@
 #include "fix.h"
 #include "lammps.h"
 #include "modify.h"
+#include "update.h"
 
 #include <mpi.h>
 #include <vector>
@@ -26,6 +27,23 @@ namespace SPHSoilFixes {
 
 // the name under which fix sph/soil answers extract()
 constexpr const char *INTEGRATOR = "sph_soil_integrator";
+
+// the simulated time now (LAMMPS's thermo keyword `time`), also across changes of the time step
+inline double elapsed_time(const Update *update)
+{
+  return update->atime + (update->ntimestep - update->atimestep) * update->dt;
+}
+
+// after owned atoms were added or deleted within a run: the total count and the ID map
+inline void recount_atoms(Atom *atom, MPI_Comm world)
+{
+  bigint nlocal = atom->nlocal;
+  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->map_init();
+    atom->map_set();
+  }
+}
 
 // A fix's per-atom arrays, the LAMMPS way: grown with the atoms, copied and exchanged with
 // them, set for new atoms, and kept in restart files. Call from the fix's constructor (LAMMPS

@@ -18,11 +18,16 @@
 
 namespace LAMMPS_NS {
 
-// what a refinement knows of each particle's history: the total strain at its birth (the split
-// that made it; zero for a particle never split), or nullptr where nothing is kept (the
-// sph_soil/refine command: the strain since the start)
+// What a refinement knows of each particle's history, per atom (fix sph/soil/refine keeps it;
+// nullptr where nothing is kept, as in the sph_soil/refine command, whose criterion then
+// measures the strain since the start): the total strain at its birth (the split that made it;
+// zero for a particle never split), since when it has been quiet (< 0: it is not), and its
+// families: per level l = 1..maxlevel (column l - 1), the ID of the particle whose split made
+// it or its ancestor of that level, which daughter 0 kept (0: unknown).
 struct RefineHistory {
-  double *const *strain_at_birth = nullptr;
+  double **strain_at_birth = nullptr;    // Voigt
+  double *quiet_since = nullptr;
+  double **family = nullptr;
 };
 
 class SPHSoilRefineCriterion : protected Pointers {

@@ -71,7 +71,7 @@ class SPHSoilRefineCriterionStrain : public SPHSoilRefineCriterion {
   double threshold;
   bool since_split;
   AtomVecSPHSoil *avec;
-  const double *const *strain_at_birth = nullptr;
+  double **strain_at_birth = nullptr;
 };
 
 }    // namespace LAMMPS_NS

@@ -27,6 +27,7 @@
 #include "soil_kernels.h"
 #include "soil_refine_split.h"
 #include "sph_soil_compat.h"
+#include "sph_soil_fixes.h"
 #include "sph_soil_materials.h"
 #include "sph_soil_refine_balance.h"
 #include "sph_soil_refine_selection.h"
@@ -74,14 +75,14 @@ void SPHSoilRefineMerger::merge_values(int i, double *values) const
    reneighbours). Collective.
 ------------------------------------------------------------------------- */
 
-bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineState &state_now, int groupbit, int maxlevel,
+bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int groupbit, int maxlevel,
                                   int nevery)
 {
-  state = state_now;
+  state = history;
   double **family = state.family, *quiet_since = state.quiet_since, **strain_at_birth = state.strain_at_birth;
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int nlocal = atom->nlocal;
-  const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  const double now = SPHSoilFixes::elapsed_time(update);
 
   // a family must have been quiet for the hold time: looking four times per hold time is
   // enough (a merge comes at most a quarter of it late), and spares the checks in between. The
@@ -231,12 +232,7 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineState &state_now, int gr
     }
   }
   atom->nlocal = n;
-  bigint natoms = atom->nlocal;
-  MPI_Allreduce(&natoms, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (atom->map_style != Atom::MAP_NONE) {
-    atom->map_init();
-    atom->map_set();
-  }
+  SPHSoilFixes::recount_atoms(atom, world);
   return all;
 }
 

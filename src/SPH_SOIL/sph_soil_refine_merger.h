@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPH_SOIL package for LAMMPS: merging (derefinement) for fix sph/soil/refine.
-   doc/theory.rst section 5.11; the fix holds the per-atom state (RefineState)
-   and hands its communication callbacks to the merger.
+   doc/theory.rst section 5.11; the fix holds the per-atom history
+   (RefineHistory) and hands its communication callbacks to the merger.
 
    Siblings (the 4 or 8 daughters of one split) merge back into one particle
    when all of them have been quiet for the hold time, are complete, lie within
@@ -15,16 +15,9 @@
 #define LMP_SPH_SOIL_REFINE_MERGER_H
 
 #include "pointers.h"
+#include "sph_soil_refine_criterion.h"
 
 namespace LAMMPS_NS {
-
-// the per-atom state of fix sph/soil/refine that a merge reads and writes
-struct RefineState {
-  double **strain_at_birth = nullptr;    // Voigt
-  double *quiet_since = nullptr;         // the time since which it is quiet (< 0: not)
-  double **family = nullptr;             // per level l = 1..maxlevel (column l - 1): the ID of
-                                         // the particle whose split made it or its ancestor
-};
 
 class SPHSoilRefineMerger : protected Pointers {
  public:
@@ -43,7 +36,7 @@ class SPHSoilRefineMerger : protected Pointers {
   // communication callbacks call this object's; the ghosts must be current. Returns the
   // families merged on all ranks; if any, the ghosts are gone (the caller reneighbours).
   // Collective.
-  bigint merge(class Fix *fix, const RefineState &state, int groupbit, int maxlevel, int nevery);
+  bigint merge(class Fix *fix, const RefineHistory &history, int groupbit, int maxlevel, int nevery);
 
   int pack_forward_comm(int n, int *list, double *buf);
   void unpack_forward_comm(int n, int first, double *buf);
@@ -55,7 +48,7 @@ class SPHSoilRefineMerger : protected Pointers {
   double merge_time;
   SPHSoilRefineBalance &balance;
   SPHSoilRefineSplitter &splitter;
-  RefineState state;
+  RefineHistory state;
   double **merge_buffer = nullptr;    // the rows of owned atoms and ghosts
   int merge_rows = 0;
   void merge_values(int i, double *values) const;

@@ -4,6 +4,7 @@
 
 #include "sph_soil_refine_splitter.h"
 
+#include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
 
@@ -180,13 +181,7 @@ bigint SPHSoilRefineSplitter::split(const std::vector<int> &parents)
   stop_if_outside_box(parents, daughters);
   add_daughters(parents, first_tag, daughters);
 
-  // global bookkeeping
-  bigint nlocal = atom->nlocal;
-  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (atom->map_style != Atom::MAP_NONE) {
-    atom->map_init();
-    atom->map_set();
-  }
+  SPHSoilFixes::recount_atoms(atom, world);
   return total;
 }
 
