@@ -1,5 +1,6 @@
 // The pair term's pieces that are not covered by the LAMMPS-level tests: the mirrored stress of
-// a free-slip wall image, and the Coulomb interface of a frictional wall.
+// a free-slip wall image, the Coulomb interface of a frictional wall, and the density's step.
+#include "soil_density_step.h"
 #include "soil_pair_terms.h"
 #include "soil_wall_friction.h"
 #include "soil_wall_images.h"
@@ -154,4 +155,16 @@ TEST(WallFriction, InterfacePressureFollowsTheContactOverTimeWithoutSlip)
   add_contact(contact, 20.0, 0.5, normal, at_rest, 0.0, 0.01);
   EXPECT_TRUE(contact_friction(contact, 1.0, f, v, h, c, dt, pressure, ratio));
   EXPECT_NEAR(pressure, 1100.0, 1e-9);
+}
+
+// The density's step exp(x): the series is exp to round-off where it is used, the switch to
+// std::exp has no visible step, and the factor is positive for any rate (doc/theory.rst 4.1).
+TEST(DensityStep, GrowthIsTheExponentialAndPositive)
+{
+  for (double x = -2.0e-3; x <= 2.0e-3; x += 1.0e-5)
+    EXPECT_NEAR(density_growth(x), std::exp(x), 4e-16) << "x = " << x;
+  for (double x : {1e-12, -1e-12, 1e-6, -1e-6, 9.999e-4, -9.999e-4})
+    EXPECT_NEAR(density_growth(x) / std::exp(x), 1.0, 1e-14) << "x = " << x;
+  for (double x : {-1.0, -10.0, -700.0, -1e300}) EXPECT_GE(density_growth(x), 0.0) << "x = " << x;
+  EXPECT_GT(density_growth(-10.0), 0.0);
 }

@@ -21,13 +21,14 @@ class Restart : public SoilTest {
  protected:
 
   // a soil column in a box of walls (floor no-slip, sides mirror, frictional right wall), under
-  // gravity, refined where it strains: the state a restart must carry
+  // gravity, refined where it strains: the state a restart must carry; with the continuity
+  // equation that is not the default, which the file must carry too
   void walled_refining_column()
   {
     HIDE_OUTPUT([&] {
       for (const auto &line : walled_column_commands()) command(line);
       command("sph_soil/set soil geostatic 0.1 1850 9.81 0.5");
-      command("pair_style sph/soil alpha 0.2");
+      command("pair_style sph/soil alpha 0.2 continuity mass");
       command("pair_coeff 1 1 soil 1850 1.5e6 0.3 30 0 0");
       command("pair_coeff 2 2 wall friction 0.4");
       command("variable push atom 0.3*(x>0.05)");

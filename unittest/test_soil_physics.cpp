@@ -5,11 +5,13 @@
 #include "comm.h"
 #include "domain.h"
 #include "fix.h"
+#include "group.h"
 #include "force.h"
 #include "compute.h"
 #include "modify.h"
 #include "pair_sph_soil.h"
 #include "soil_drucker_prager.h"
+#include "soil_kernel_cubic.h"
 #include "update.h"
 
 #include <cmath>
@@ -87,6 +89,19 @@ class SoilPhysics : public SoilTest {
     });
     periodic_patch();
     soil_run_setup();
+  }
+
+  // from a cleared LAMMPS: an empty periodic 2D box of one atom type, x and y extents in the
+  // lattice's spacings of 1 cm ("xlo xhi ylo yhi"); commands to run inside HIDE_OUTPUT
+  void empty_periodic_box(const std::string &extent)
+  {
+    for (const auto &line : {std::string("clear"), std::string("units si"),
+                             std::string("dimension 2"), std::string("boundary p p p"),
+                             std::string("atom_style sph/soil"), std::string("atom_modify map array"),
+                             std::string("lattice sq 0.01"),
+                             "region box block " + extent + " -0.5 0.5",
+                             std::string("create_box 1 box")})
+      command(line);
   }
 
   void soil_run_setup()
@@ -252,15 +267,7 @@ TEST_F(SoilPhysics, ElasticVibrationConservesEnergyAtSecondOrder)
   const double K = 0.7e6, nu = 0.3, G = 3 * K * (1 - 2 * nu) / (2 * (1 + nu));
   auto build = [&](double dt) {
     HIDE_OUTPUT([&] {
-      command("clear");
-      command("units si");
-      command("dimension 2");
-      command("boundary p p p");
-      command("atom_style sph/soil");
-      command("atom_modify map array");
-      command("lattice sq 0.01");
-      command("region box block 0 16 0 4 -0.5 0.5");
-      command("create_box 1 box");
+      empty_periodic_box("0 16 0 4");
       command("create_atoms 1 box");
       command("sph_soil/set all mass 0.265 h 0.012 density 2650");
       command("variable vx atom 0.01*sin(2*PI*x/0.16)");
@@ -584,4 +591,69 @@ TEST_F(SoilPhysics, ViscosityH0GivesEveryPairTheDissipationOfTheReferenceSmoothi
   }
   EXPECT_LT(difference, 1e-12 * largest);
   EXPECT_GT(change, 1e-3 * largest);
+}
+
+// The continuity equation at a thin front (doc/theory.rst 2.1): a particle that leaves the edge
+// of a body whose density holds (the others not integrated), stress-free (a cohesionless soil
+// in tension), so at constant velocity. The volume form loses log-density by the Shepard sum of
+// its neighbours at the start, ln(rho_f / rho_0) = -sum_j V_j W_ij(0), whatever its own
+// density; the mass form loses density, rho_0 - rho_f = sum_j m_j W_ij(0), at the neighbours'
+// density. Started at 0.3 of theirs, the mass form goes below zero and stops the run.
+TEST_F(SoilPhysics, ParticleLeavingABodyKeepsItsDensityPositive)
+{
+  constexpr double rho0 = 2650.0, h = 0.012, start = 0.3 * rho0;
+  auto leave = [&](const char *continuity) {
+    HIDE_OUTPUT([&] {
+      empty_periodic_box("0 30 0 20");
+      command("region body block 4.9 15.1 4.9 15.1 INF INF");
+      command("create_atoms 1 region body");
+      command("sph_soil/set all mass 0.265 h 0.012 density 2650");
+      command("region edge block 14.9 15.1 9.9 10.1 INF INF");
+      command("group runner region edge");
+      command("sph_soil/set runner density 795");
+      command("velocity runner set 1.0 0.0 0.0 units box");
+      command(std::string("pair_style sph/soil continuity ") + continuity);
+      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
+      command("fix integrate runner sph/soil");
+      command("timestep 2.0e-5");
+      command("neighbor 0.002 bin");
+      command("thermo 0");
+    });
+  };
+  leave("volume");
+  auto atom = lmp->atom;
+  ASSERT_EQ(atom->natoms, 121);
+  const int runner = lmp->group->bitmask[lmp->group->find("runner")];
+  // the Shepard sum of its neighbours at the start, with the package's kernel
+  double local_sum = 0.0, runner_x[3] = {0.0, 0.0, 0.0};
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & runner)
+      for (int a = 0; a < 3; a++) runner_x[a] = atom->x[i][a];
+  double global_x[3];
+  MPI_Allreduce(runner_x, global_x, 3, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_DOUBLE_EQ(global_x[0], 0.15);
+  EXPECT_DOUBLE_EQ(global_x[1], 0.10);
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (atom->mask[i] & runner) continue;
+    const double dx = atom->x[i][0] - global_x[0], dy = atom->x[i][1] - global_x[1];
+    local_sum += atom->rmass[i] / atom->rho[i] *
+                 SPHSoil::CubicSpline::value(2, std::sqrt(dx * dx + dy * dy), h);
+  }
+  double shepard = 0.0;
+  MPI_Allreduce(&local_sum, &shepard, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_GT(shepard, 0.35);    // an edge particle: about half the 0.684 of a lattice
+  // 0.03 s: 3 cm, beyond the support 2h = 2.4 cm
+  HIDE_OUTPUT([&] { command("run 1500 post no"); });
+  double local_rho = 0.0, rho = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & runner) local_rho = atom->rho[i];
+  MPI_Allreduce(&local_rho, &rho, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_NEAR(rho, start * std::exp(-shepard), 1e-6 * start);
+  EXPECT_GT(rho, 0.0);
+  // the mass form's end, start - rho0 * shepard, lies below zero: the density vanishes (the
+  // logarithmic step takes it to 0, not below) and the run stops
+  ASSERT_LT(start - rho0 * shepard, 0.0);
+  leave("mass");
+  EXPECT_LAMMPS_ERROR(".*Fix sph/soil: particle [0-9]+ became unstable at step [0-9]+ \\(density (0|-[0-9.e+-]+), .*",
+                      command("run 1500 post no"));
 }

@@ -17,6 +17,7 @@
 #include "pair_sph_soil.h"
 #include "thermo.h"
 #include "soil_constitutive.h"
+#include "soil_density_step.h"
 #include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
@@ -205,10 +206,11 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
     }
     // Heun predictor for density, strain and stress: a full step with the old rates,
     // so that the force evaluation sees the state at t + dt (a half step would make the
-    // scheme first order); the old rates are kept for the corrector
+    // scheme first order); the old rates are kept for the corrector. The density steps in
+    // its logarithm (doc/theory.rst 4.1): positive whatever the rate
     double *old = integrator_state[i];
-    old[HEUN_DRHO] = drho[i];
-    rho[i] += dtv * drho[i];
+    old[HEUN_LOG_DRHO] = drho[i] / rho[i];
+    rho[i] *= SPHSoil::density_growth(dtv * old[HEUN_LOG_DRHO]);
     for (int k = 0; k < 6; k++) {
       old[HEUN_STRAIN_RATE + k] = avec->strain_rate[i][k];
       avec->total_strain[i][k] += dtv * avec->strain_rate[i][k];
@@ -283,7 +285,7 @@ void FixSPHSoil::final_integrate()
     const double dtfm = dtf / rmass[i];
     for (int a = 0; a < 3; a++) v[i][a] += dtfm * f[i][a];
     const double *old = integrator_state[i];
-    rho[i] += dtf * (drho[i] - old[HEUN_DRHO]);
+    rho[i] *= SPHSoil::density_growth(dtf * (drho[i] / rho[i] - old[HEUN_LOG_DRHO]));
     for (int k = 0; k < 6; k++)
       avec->total_strain[i][k] += dtf * (avec->strain_rate[i][k] - old[HEUN_STRAIN_RATE + k]);
 

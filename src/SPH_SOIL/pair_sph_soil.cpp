@@ -87,12 +87,14 @@ void PairSPHSoil::set_defaults()
   viscosity_h0 = 0.0;
   artificial_stress_epsilon = SPHSoil::ARTIFICIAL_STRESS_EPSILON;
   free_slip = false;
+  continuity_volume = true;
   kernel = SPHSoil::KernelKind();
 }
 
 /* ----------------------------------------------------------------------
    pair_style sph/soil [alpha A] [beta B] [viscosity_h0 H] [wall noslip|freeslip]
                        [kernel cubic|wendland2] [artificial_stress epsilon]
+                       [continuity volume|mass]
 ------------------------------------------------------------------------- */
 
 void PairSPHSoil::settings(int narg, char **arg)
@@ -124,6 +126,13 @@ void PairSPHSoil::settings(int narg, char **arg)
        [&](const char *v) {
          artificial_stress_epsilon =
              number_of("artificial_stress", v, between(0.0, 1.0, false, false));
+       }},
+      {"continuity",
+       [&](const char *v) {
+         if (strcmp(v, "volume") != 0 && strcmp(v, "mass") != 0)
+           error->all(FLERR, "Illegal pair_style sph/soil continuity {}: must be volume or mass",
+                      v);
+         continuity_volume = strcmp(v, "volume") == 0;
        }},
   };
   for (int iarg = 0; iarg < narg; iarg += 2) {
@@ -324,31 +333,35 @@ void PairSPHSoil::unpack_reverse_comm(int n, int *list, double *buf)
 void PairSPHSoil::write_restart_settings(FILE *fp)
 {
   const int format = RESTART_FORMAT;
-  const int flags[2] = {free_slip ? 1 : 0, kernel.index};
+  const int flags[3] = {free_slip ? 1 : 0, kernel.index, continuity_volume ? 1 : 0};
   const double numbers[4] = {viscosity_alpha, viscosity_beta, viscosity_h0,
                              artificial_stress_epsilon};
   fwrite(&format, sizeof(int), 1, fp);
-  fwrite(flags, sizeof(int), 2, fp);
+  fwrite(flags, sizeof(int), 3, fp);
   fwrite(numbers, sizeof(double), 4, fp);
 }
 
 void PairSPHSoil::read_restart_settings(FILE *fp)
 {
-  int format = 0, flags[2] = {0, 0};
+  // format 1 (before the continuity keyword) was written by runs of the mass form: they go on
+  // with it
+  int format = 0, flags[3] = {0, 0, 0};
   double numbers[4] = {0.0, 0.0, 0.0, 0.0};
   if (comm->me == 0) utils::sfread(FLERR, &format, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&format, 1, MPI_INT, 0, world);
-  if (format != RESTART_FORMAT)
+  if (format != RESTART_FORMAT && format != 1)
     error->all(FLERR, "Restart file holds pair_style sph/soil data of format {}; this build of "
-                      "SPH_SOIL reads format {}", format, RESTART_FORMAT);
+                      "SPH_SOIL reads formats 1 to {}", format, RESTART_FORMAT);
+  const int nflags = format == 1 ? 2 : 3;
   if (comm->me == 0) {
-    utils::sfread(FLERR, flags, sizeof(int), 2, fp, nullptr, error);
+    utils::sfread(FLERR, flags, sizeof(int), nflags, fp, nullptr, error);
     utils::sfread(FLERR, numbers, sizeof(double), 4, fp, nullptr, error);
   }
-  MPI_Bcast(flags, 2, MPI_INT, 0, world);
+  MPI_Bcast(flags, 3, MPI_INT, 0, world);
   MPI_Bcast(numbers, 4, MPI_DOUBLE, 0, world);
   free_slip = flags[0] != 0;
   kernel.index = flags[1];
+  continuity_volume = flags[2] != 0;
   viscosity_alpha = numbers[0];
   viscosity_beta = numbers[1];
   viscosity_h0 = numbers[2];

@@ -52,7 +52,7 @@ class PairSPHSoil : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   // the layout of the style's restart data has a number: read_restart of another stops
-  static constexpr int RESTART_FORMAT = 1;
+  static constexpr int RESTART_FORMAT = 2;
 
   // for fix sph/soil, the refinement and the computes
   const SPHSoil::SoilMaterial &material(int type) const { return materials.of(type); }
@@ -85,6 +85,9 @@ class PairSPHSoil : public Pair {
   std::vector<int> type_artificial_stress;
   bool has_artificial_stress;
   bool free_slip;    // the slip of walls without their own (pair_style ... wall freeslip)
+  // continuity equation: rho_i sum_j V_j v_ij . grad W (true, the default: the density stays
+  // positive however a thin front spreads, doc/theory.rst 2.1) or sum_j m_j v_ij . grad W
+  bool continuity_volume;
   SPHSoil::KernelKind kernel;    // the pair loop is compiled once per kernel
   SPHSoilMaterials materials;
   std::unique_ptr<class SPHSoilWalls> walls;

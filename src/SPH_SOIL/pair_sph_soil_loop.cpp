@@ -145,11 +145,14 @@ template <int DIMENSION> void PairSPHSoil::unpack_sums()
   const int n = force->newton_pair ? atom->nlocal + atom->nghost : atom->nlocal;
   double **f = atom->f, **strain_rate = avec->strain_rate, **spin = avec->spin;
   double *drho = atom->drho;
+  const double *rho = atom->rho;
+  const bool volume_form = continuity_volume;
   constexpr int D = DIMENSION;
   for (int i = 0; i < n; i++) {
     const double *sum = sums + (size_t) i * SUM_ROW<D>();
     for (int a = 0; a < D; a++) f[i][a] += sum[S_FORCE + a];
-    drho[i] += sum[S_DRHO<D>()];
+    // the volume form sums V_j (v_ij . grad W) = -div v: the rate is rho_i times it
+    drho[i] += (volume_form ? rho[i] : 1.0) * sum[S_DRHO<D>()];
     // strain rate (Voigt) and spin (xy xz yz): the symmetric and antisymmetric parts
     const double *g = sum + S_GRADIENT<D>();
     for (int a = 0; a < D; a++) strain_rate[i][a] += g[a * D + a];
@@ -236,6 +239,8 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   }
 
   const double mw = pw[P_MASS], mass_product = ps[P_MASS] * mw;
+  // the image's volume: the wall particle's mass at the soil's density
+  const double volume = mw / rhos;
   if (VIRIAL)
     ev_tally_xyz(soil, wall, nlocal, newton_pair, 0.0, 0.0, mass_product * terms.force[0],
                  mass_product * terms.force[1], D == 3 ? mass_product * terms.force[2] : 0.0,
@@ -246,10 +251,8 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   }
   if (!update_soil) return;
   double *os = sums + (size_t) soil * SUM_ROW<D>();
-  os[S_DRHO<D>()] += mw * terms.density_rate;
+  os[S_DRHO<D>()] += (continuity_volume ? volume : mw) * terms.density_rate;
   for (int a = 0; a < D; a++) os[S_FORCE + a] += mass_product * terms.force[a];
-  // the image's volume: the wall particle's mass at the soil's density
-  const double volume = mw / rhos;
   for (int c = 0; c < D; c++)
     for (int d = 0; d < D; d++) os[S_GRADIENT<D>() + c * D + d] += volume * terms.gradient[c][d];
 }
@@ -284,6 +287,8 @@ template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL> void
   constexpr int ROW = SUM_ROW<D>();
   constexpr int DRHO = S_DRHO<D>(), GRADIENT = S_GRADIENT<D>();
   const int *const partners = neighbours.partner_data();
+  // the continuity sum's weight of a partner: its volume, or its mass (the paper's form)
+  const int weight_column = continuity_volume ? P_VOLUME : P_MASS;
 
   for (int i = 0; i < nlocal; i++) {
     const int itype = type[i];
@@ -353,8 +358,8 @@ template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL> void
                      mass_product * terms.force[1], D == 3 ? mass_product * terms.force[2] : 0.0,
                      g.dx[0], g.dx[1], g.dx[2]);
       double *oj = out + (size_t) j * ROW;
-      drho_i += mj * terms.density_rate;
-      oj[DRHO] += mi * terms.density_rate;
+      drho_i += pj[weight_column] * terms.density_rate;
+      oj[DRHO] += pi[weight_column] * terms.density_rate;
       for (int a = 0; a < D; a++) {
         const double force = mass_product * terms.force[a];
         force_i[a] += force;
