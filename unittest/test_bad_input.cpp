@@ -451,17 +451,18 @@ std::vector<BadInput> cases()
         {"sph_soil/set soil density 1 geostatic 0.1 2650 9.81 0.5",
          "fix down soil gravity 9.81 vector 0 -1 0"},
         "run 20 post no",
-        "times its material's rho0 (never set with 'sph_soil/set ... density'? an expansion at a "
-        "free surface, or a leak through a wall?)");
+        "Fix sph/soil: 80 soil particle(s) have a density below exp(-1) = 0.368 times their "
+        "material's rho0, the least a soil particle can have (atom 21: 1 against rho0 2650); set "
+        "it with 'sph_soil/set <group> density'");
   error("MohrCoulombTensionAtTheApex", "walls",
         {"pair_coeff 1 1 soil 2650 mohr_coulomb 0.7e6 0.3 30 0 1e4",
          "sph_soil/set soil stress 17300 17300 17300 0 0 0", "group one id 45",
-         "sph_soil/set one density 1e-300"},
+         "velocity one set 1e308 1e308 0 units box"},
         "run 10 post no",
         "soil particle(s) are in tension at the apex of their yield surface, where SPH is unstable: "
         "give the soil a tension cut-off ('tension 0' of its model)");
   error("SoilBehindAWall", "walls", {"set atom 25 y 0.018", "group one id 25",
-                                     "sph_soil/set one density 1e-300"},
+                                     "velocity one set 1e308 1e308 0 units box"},
         "run 10 post no",
         "soil particle(s) are behind a wall's plane: the soil crossed a wall (thicker walls, or a "
         "smaller time step)");

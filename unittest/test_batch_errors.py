@@ -54,7 +54,7 @@ create_box 1 box
 create_atoms 1 box
 sph_soil/set all mass 0.265 h 0.012 density 2650
 group one id 300
-sph_soil/set one density 1e-300
+velocity one set 1e308 1e308 0 units box
 pair_style sph/soil
 pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0
 fix integrate all sph/soil

@@ -11,6 +11,7 @@
 #include "modify.h"
 #include "pair_sph_soil.h"
 #include "soil_drucker_prager.h"
+#include "soil_density_step.h"
 #include "soil_kernel_cubic.h"
 #include "update.h"
 
@@ -385,7 +386,7 @@ TEST_F(SoilPhysics, GeostaticColumnStaysAtRestInABoxOfExtrapolatedWalls)
 }
 
 // A run that goes unstable stops at once and names a particle and the step, rather than
-// carrying NaN on. Here one particle's density of 1e-300 makes its stress/rho^2 infinite.
+// carrying NaN on. Here one particle's velocity of 1e308 m/s makes its pair terms overflow.
 // The check is collective: the error is raised on every rank, whichever owns the particle.
 TEST_F(SoilPhysics, UnstableRunStopsNamingParticleAndStep)
 {
@@ -394,7 +395,7 @@ TEST_F(SoilPhysics, UnstableRunStopsNamingParticleAndStep)
   soil_run_setup();
   HIDE_OUTPUT([&] {
     command("group one id 37");
-    command("sph_soil/set one density 1e-300");
+    command("velocity one set 1e308 1e308 0 units box");
   });
   EXPECT_LAMMPS_ERROR(".*Fix sph/soil: particle [0-9]+ became unstable at step 1 \\(density .*\\); "
                       "reduce the timestep \\(or the cfl value\\).*",
@@ -596,13 +597,15 @@ TEST_F(SoilPhysics, ViscosityH0GivesEveryPairTheDissipationOfTheReferenceSmoothi
 // The continuity equation at a thin front (doc/theory.rst 2.1): a particle that leaves the edge
 // of a body whose density holds (the others not integrated), stress-free (a cohesionless soil
 // in tension), so at constant velocity. The volume form loses log-density by the Shepard sum of
-// its neighbours at the start, ln(rho_f / rho_0) = -sum_j V_j W_ij(0), whatever its own
-// density; the mass form loses density, rho_0 - rho_f = sum_j m_j W_ij(0), at the neighbours'
-// density. Started at 0.3 of theirs, the mass form goes below zero and stops the run.
-TEST_F(SoilPhysics, ParticleLeavingABodyKeepsItsDensityPositive)
+// its neighbours at the start, ln(rho_f / rho_0) = -S = -sum_j V_j W_ij(0); the mass form loses
+// density at the neighbours' density, rho_0 - rho_f = sum_j m_j W_ij(0). Neither goes below the
+// floor exp(-1) rho0: a particle started at 0.5 rho0 ends there.
+TEST_F(SoilPhysics, ParticleLeavingABodyKeepsItsDensityAboveTheFloor)
 {
-  constexpr double rho0 = 2650.0, h = 0.012, start = 0.3 * rho0;
-  auto leave = [&](const char *continuity) {
+  constexpr double rho0 = 2650.0, h = 0.012;
+  // the runner's density after 0.03 s (3 cm, beyond the support 2h = 2.4 cm), and the Shepard
+  // sum of its neighbours at the start, with the package's kernel
+  auto leave = [&](const char *continuity, const char *start, double &shepard) {
     HIDE_OUTPUT([&] {
       empty_periodic_box("0 30 0 20");
       command("region body block 4.9 15.1 4.9 15.1 INF INF");
@@ -610,7 +613,7 @@ TEST_F(SoilPhysics, ParticleLeavingABodyKeepsItsDensityPositive)
       command("sph_soil/set all mass 0.265 h 0.012 density 2650");
       command("region edge block 14.9 15.1 9.9 10.1 INF INF");
       command("group runner region edge");
-      command("sph_soil/set runner density 795");
+      command(std::string("sph_soil/set runner density ") + start);
       command("velocity runner set 1.0 0.0 0.0 units box");
       command(std::string("pair_style sph/soil continuity ") + continuity);
       command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
@@ -619,41 +622,39 @@ TEST_F(SoilPhysics, ParticleLeavingABodyKeepsItsDensityPositive)
       command("neighbor 0.002 bin");
       command("thermo 0");
     });
+    auto atom = lmp->atom;    // after 'clear': a new one
+    const int runner = lmp->group->bitmask[lmp->group->find("runner")];
+    double local_x[3] = {0.0, 0.0, 0.0}, x[3];
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->mask[i] & runner)
+        for (int a = 0; a < 3; a++) local_x[a] = atom->x[i][a];
+    MPI_Allreduce(local_x, x, 3, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    EXPECT_DOUBLE_EQ(x[0], 0.15);    // the middle of the body's right edge
+    EXPECT_DOUBLE_EQ(x[1], 0.10);
+    double local_sum = 0.0;
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (atom->mask[i] & runner) continue;
+      const double dx = atom->x[i][0] - x[0], dy = atom->x[i][1] - x[1];
+      local_sum += atom->rmass[i] / atom->rho[i] *
+                   SPHSoil::CubicSpline::value(2, std::sqrt(dx * dx + dy * dy), h);
+    }
+    MPI_Allreduce(&local_sum, &shepard, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    HIDE_OUTPUT([&] { command("run 1500 post no"); });
+    double local_rho = 0.0, rho = 0.0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->mask[i] & runner) local_rho = atom->rho[i];
+    MPI_Allreduce(&local_rho, &rho, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return rho;
   };
-  leave("volume");
-  auto atom = lmp->atom;
-  ASSERT_EQ(atom->natoms, 121);
-  const int runner = lmp->group->bitmask[lmp->group->find("runner")];
-  // the Shepard sum of its neighbours at the start, with the package's kernel
-  double local_sum = 0.0, runner_x[3] = {0.0, 0.0, 0.0};
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & runner)
-      for (int a = 0; a < 3; a++) runner_x[a] = atom->x[i][a];
-  double global_x[3];
-  MPI_Allreduce(runner_x, global_x, 3, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-  EXPECT_DOUBLE_EQ(global_x[0], 0.15);
-  EXPECT_DOUBLE_EQ(global_x[1], 0.10);
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (atom->mask[i] & runner) continue;
-    const double dx = atom->x[i][0] - global_x[0], dy = atom->x[i][1] - global_x[1];
-    local_sum += atom->rmass[i] / atom->rho[i] *
-                 SPHSoil::CubicSpline::value(2, std::sqrt(dx * dx + dy * dy), h);
-  }
   double shepard = 0.0;
-  MPI_Allreduce(&local_sum, &shepard, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  const double volume_form = leave("volume", "2650", shepard);
   EXPECT_GT(shepard, 0.35);    // an edge particle: about half the 0.684 of a lattice
-  // 0.03 s: 3 cm, beyond the support 2h = 2.4 cm
-  HIDE_OUTPUT([&] { command("run 1500 post no"); });
-  double local_rho = 0.0, rho = 0.0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & runner) local_rho = atom->rho[i];
-  MPI_Allreduce(&local_rho, &rho, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-  EXPECT_NEAR(rho, start * std::exp(-shepard), 1e-6 * start);
-  EXPECT_GT(rho, 0.0);
-  // the mass form's end, start - rho0 * shepard, lies below zero: the density vanishes (the
-  // logarithmic step takes it to 0, not below) and the run stops
-  ASSERT_LT(start - rho0 * shepard, 0.0);
-  leave("mass");
-  EXPECT_LAMMPS_ERROR(".*Fix sph/soil: particle [0-9]+ became unstable at step [0-9]+ \\(density (0|-[0-9.e+-]+), .*",
-                      command("run 1500 post no"));
+  EXPECT_NEAR(volume_form, rho0 * std::exp(-shepard), 1e-6 * rho0);
+  const double mass_form = leave("mass", "2650", shepard);
+  EXPECT_NEAR(mass_form, rho0 * (1.0 - shepard), 1e-4 * rho0);
+  // both above the floor; from 0.5 rho0, where both would end below it, at the floor
+  ASSERT_GT(rho0 * (1.0 - shepard), SPHSoil::DENSITY_FLOOR * rho0);
+  ASSERT_LT(0.5 * rho0 * std::exp(-shepard), SPHSoil::DENSITY_FLOOR * rho0);
+  for (const char *form : {"volume", "mass"})
+    EXPECT_NEAR(leave(form, "1325", shepard), SPHSoil::DENSITY_FLOOR * rho0, 1e-6 * rho0) << form;
 }

@@ -24,6 +24,7 @@
 #include "update.h"
 #include "utils.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -101,6 +102,10 @@ void FixSPHSoil::init()
 
   model_of_type.assign(atom->ntypes + 1, nullptr);
   for (int type = 1; type <= atom->ntypes; type++) model_of_type[type] = pair->model(type);
+  density_floor_of_type.assign(atom->ntypes + 1, 0.0);
+  for (int type = 1; type <= atom->ntypes; type++)
+    if (model_of_type[type])
+      density_floor_of_type[type] = SPHSoil::DENSITY_FLOOR * pair->material(type).density;
 
   // one integrator per particle: two fixes sph/soil over the same particles would each
   // advance them, a step of 2 dt
@@ -163,6 +168,19 @@ void FixSPHSoil::setup(int /*vflag*/)
 {
   restore_pending = true;
   const int nlocal = atom->nlocal;
+  // a density below the floor is not a state of the soil (doc/theory.rst 2.1): the steps would
+  // lift it at once, so it is an input error (a density never set, most likely)
+  const auto thin = SPHSoilOffenders::find_offenders(
+      lmp, [&](int i) { return integrated(i) && atom->rho[i] < density_floor_of_type[atom->type[i]]; },
+      [&](int i, double *values) {
+        values[0] = atom->rho[i];
+        values[1] = pair->material(atom->type[i]).density;
+      });
+  if (thin)
+    error->all(FLERR, "Fix sph/soil: {} soil particle(s) have a density below exp(-1) = 0.368 times "
+                      "their material's rho0, the least a soil particle can have (atom {}: {} "
+                      "against rho0 {}); set it with 'sph_soil/set <group> density'",
+               thin.count, thin.first, thin.values[0], thin.values[1]);
   for (int i = 0; i < nlocal; i++)
     if (integrated(i))
       model_of_type[atom->type[i]]->stress_rate(avec->stress[i], avec->strain_rate[i], avec->spin[i],
@@ -210,7 +228,8 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
     // its logarithm (doc/theory.rst 4.1): positive whatever the rate
     double *old = integrator_state[i];
     old[HEUN_LOG_DRHO] = drho[i] / rho[i];
-    rho[i] *= SPHSoil::density_growth(dtv * old[HEUN_LOG_DRHO]);
+    rho[i] = std::max(rho[i] * SPHSoil::density_growth(dtv * old[HEUN_LOG_DRHO]),
+                      density_floor_of_type[atom->type[i]]);
     for (int k = 0; k < 6; k++) {
       old[HEUN_STRAIN_RATE + k] = avec->strain_rate[i][k];
       avec->total_strain[i][k] += dtv * avec->strain_rate[i][k];
@@ -285,7 +304,8 @@ void FixSPHSoil::final_integrate()
     const double dtfm = dtf / rmass[i];
     for (int a = 0; a < 3; a++) v[i][a] += dtfm * f[i][a];
     const double *old = integrator_state[i];
-    rho[i] *= SPHSoil::density_growth(dtf * (drho[i] / rho[i] - old[HEUN_LOG_DRHO]));
+    rho[i] = std::max(rho[i] * SPHSoil::density_growth(dtf * (drho[i] / rho[i] - old[HEUN_LOG_DRHO])),
+                      density_floor_of_type[atom->type[i]]);
     for (int k = 0; k < 6; k++)
       avec->total_strain[i][k] += dtf * (avec->strain_rate[i][k] - old[HEUN_STRAIN_RATE + k]);
 
@@ -361,7 +381,7 @@ std::string FixSPHSoil::likely_causes(double density, double reference_density)
     causes.push_back(fmt::format("{} soil particle(s) are in tension at the apex of their yield "
                                  "surface, where SPH is unstable: give the soil a tension cut-off "
                                  "('tension 0' of its model)", all_at_apex));
-  if (!(density > 0.5 * reference_density && density < 2.0 * reference_density))
+  if (std::isfinite(density) && !(density > 0.5 * reference_density && density < 2.0 * reference_density))
     causes.push_back(fmt::format("its density is {:.3g} times its material's rho0 (never set with "
                                  "'sph_soil/set ... density'? an expansion at a free surface, or a "
                                  "leak through a wall?)", density / reference_density));

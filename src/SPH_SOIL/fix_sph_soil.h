@@ -72,6 +72,7 @@ class FixSPHSoil : public Fix {
   class AtomVecSPHSoil *avec;
   class PairSPHSoil *pair;
   std::vector<const SPHSoil::ConstitutiveModel *> model_of_type;    // owned by the pair style
+  std::vector<double> density_floor_of_type;    // SPHSoil::DENSITY_FLOOR of the material's rho0
   bigint yielded_count;
 
   // The integrator's own per-atom state, one row per atom (the current rates live in the atom
