@@ -1,6 +1,6 @@
 """The aluminium bars' resolution study with one dissipation at every spacing (issue 28, item 5).
 
-Runs examples/refinement/in.refinement's uniform bars (mode coarse) at the spacings SPACINGS
+Runs examples/refinement/in.refinement's uniform bars (in examples/refinement/resolution) (mode coarse) at the spacings SPACINGS
 (4, 2 and 1 mm; --finest adds 0.5 mm, about 80 minutes on 2 cores) with the artificial viscosity of
 the 2 mm lattice's h = 2.4 mm on every pair (-var h0 1: pair_style sph/soil viscosity_h0), so that
 halving the spacing no longer halves the dissipation (doc/theory.rst 5.9). For each run: the final
@@ -113,12 +113,15 @@ def add_arguments(p):
     runner.add_arguments(p, np=os.cpu_count() or 1)
     p.add_argument('--finest', action='store_true', help='also 0.5 mm (about 80 minutes on 2 cores)')
     p.add_argument('--measure-only', action='store_true', help='measure the runs there, run nothing')
-    p.add_argument('--dir', default=refinement.DIRECTORY, help='where the runs are (default: examples/refinement)')
+    p.add_argument('--dir', default=os.path.join(refinement.DIRECTORY, 'resolution'),
+                   help='where the runs are (default: examples/refinement/resolution, apart from the '
+                        'comparison\'s runs)')
 
 
 def main(a):
     spacings = SPACINGS + ((FINEST,) if a.finest else ())
     if not a.measure_only:
+        os.makedirs(a.dir, exist_ok=True)
         run_missing(runner.from_arguments(a, build=True), spacings, a.np, a.dir)
     result, grid, tops, experiment = measure(spacings, a.dir)
     report.write_json(result, os.path.join(paths.ROOT, 'doc', 'refinement_resolution.json'), indent=1)
