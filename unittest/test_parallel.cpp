@@ -78,16 +78,12 @@ class Parallel : public SoilTest {
 
   // A disordered periodic patch of soil drifting diagonally across the box at 2 m/s and 1 m/s
   // (every atom crosses rank boundaries many times), with a shear wave and varying stresses;
-  // written to a data file so that every run has the same atom IDs. `disorder`: the amplitude
-  // of the atoms' displacement from the lattice (the patch's is a tenth of its spacing, 1 mm).
-  void write_patch(const std::string &disorder = "0.001")
+  // written to a data file so that every run has the same atom IDs. `patch`: the patch's
+  // commands (testing/sph_soil_testing.h), of another disorder if need be.
+  void write_patch(const std::vector<std::string> &patch = periodic_patch_commands())
   {
     HIDE_OUTPUT([&] {
-      for (auto line : periodic_patch_commands()) {
-        const auto at = line.find("+0.001*sin");
-        if (at != std::string::npos) line.replace(at + 1, 5, disorder);
-        command(line);
-      }
+      for (const auto &line : patch) command(line);
       command("variable vx atom 2.0+0.02*sin(2*PI*y/0.16)");
       command("velocity all set v_vx 1.0 NULL units box");
       command("write_data parallel.data");
@@ -180,7 +176,7 @@ TEST_F(Parallel, RefinementWithMigrationAndBalancing)
 // taken at near-ties flip with round-off, and 1 and 2 ranks differed by 3e-7 in a density.
 TEST_F(Parallel, BalancedDeepRefinementAndMergingWithMigration)
 {
-  write_patch("0.0003");
+  write_patch(periodic_patch_commands("0.0003"));
   expect_same_on_one_rank({"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
                            "read_data parallel.data", "pair_style sph/soil",
                            "pair_coeff 1 1 soil 2650 0.7e6 0.3 0 0 1e12",

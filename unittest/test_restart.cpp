@@ -6,7 +6,9 @@
 
 #include "fix.h"
 #include "fix_sph_soil.h"
+#include "force.h"
 #include "modify.h"
+#include "pair_sph_soil.h"
 
 #include <cmath>
 #include <fstream>
@@ -199,3 +201,31 @@ TEST_F(Restart, AnOlderFixRecordStopsWithBothFormats)
 }
 
 }    // namespace
+
+// pair_style sph/soil's settings of format 1, written before the continuity keyword by runs of
+// the mass form, are read and go on with the mass form; the settings written now are of the
+// current format.
+TEST_F(Restart, PairSettingsOfTheFormatBeforeContinuityGoOnWithTheMassForm)
+{
+  patch();    // the default, the volume form
+  auto pair = dynamic_cast<PairSPHSoil *>(lmp->force->pair);
+  ASSERT_NE(pair, nullptr);
+  FILE *old = tmpfile();
+  const int format = 1, flags[2] = {0, 0};
+  const double numbers[4] = {1.0, 1.0, 0.0, 0.3};
+  fwrite(&format, sizeof(int), 1, old);
+  fwrite(flags, sizeof(int), 2, old);
+  fwrite(numbers, sizeof(double), 4, old);
+  rewind(old);
+  pair->read_restart_settings(old);
+  fclose(old);
+  FILE *now = tmpfile();
+  pair->write_restart_settings(now);
+  rewind(now);
+  int written_format = 0, written_flags[3] = {-1, -1, -1};
+  ASSERT_EQ(fread(&written_format, sizeof(int), 1, now), 1u);
+  ASSERT_EQ(fread(written_flags, sizeof(int), 3, now), 3u);
+  fclose(now);
+  EXPECT_EQ(written_format, PairSPHSoil::RESTART_FORMAT);
+  EXPECT_EQ(written_flags[2], 0) << "the mass form";
+}

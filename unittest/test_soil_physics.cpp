@@ -92,17 +92,13 @@ class SoilPhysics : public SoilTest {
     soil_run_setup();
   }
 
-  // from a cleared LAMMPS: an empty periodic 2D box of one atom type, x and y extents in the
-  // lattice's spacings of 1 cm ("xlo xhi ylo yhi"); commands to run inside HIDE_OUTPUT
+  // from a cleared LAMMPS: an empty periodic 2D box (testing/sph_soil_testing.h); commands to
+  // run inside HIDE_OUTPUT
   void empty_periodic_box(const std::string &extent)
   {
-    for (const auto &line : {std::string("clear"), std::string("units si"),
-                             std::string("dimension 2"), std::string("boundary p p p"),
-                             std::string("atom_style sph/soil"), std::string("atom_modify map array"),
-                             std::string("lattice sq 0.01"),
-                             "region box block " + extent + " -0.5 0.5",
-                             std::string("create_box 1 box")})
-      command(line);
+    command("clear");
+    command("units si");
+    for (const auto &line : periodic_box_commands(extent)) command(line);
   }
 
   void soil_run_setup()

@@ -101,11 +101,12 @@ void FixSPHSoil::init()
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
 
   model_of_type.assign(atom->ntypes + 1, nullptr);
-  for (int type = 1; type <= atom->ntypes; type++) model_of_type[type] = pair->model(type);
   density_floor_of_type.assign(atom->ntypes + 1, 0.0);
-  for (int type = 1; type <= atom->ntypes; type++)
+  for (int type = 1; type <= atom->ntypes; type++) {
+    model_of_type[type] = pair->model(type);
     if (model_of_type[type])
       density_floor_of_type[type] = SPHSoil::DENSITY_FLOOR * pair->material(type).density;
+  }
 
   // one integrator per particle: two fixes sph/soil over the same particles would each
   // advance them, a step of 2 dt
@@ -177,10 +178,10 @@ void FixSPHSoil::setup(int /*vflag*/)
         values[1] = pair->material(atom->type[i]).density;
       });
   if (thin)
-    error->all(FLERR, "Fix sph/soil: {} soil particle(s) have a density below exp(-1) = 0.368 times "
+    error->all(FLERR, "Fix sph/soil: {} soil particle(s) have a density below exp(-1) = {:.3f} times "
                       "their material's rho0, the least a soil particle can have (atom {}: {} "
                       "against rho0 {}); set it with 'sph_soil/set <group> density'",
-               thin.count, thin.first, thin.values[0], thin.values[1]);
+               thin.count, SPHSoil::DENSITY_FLOOR, thin.first, thin.values[0], thin.values[1]);
   for (int i = 0; i < nlocal; i++)
     if (integrated(i))
       model_of_type[atom->type[i]]->stress_rate(avec->stress[i], avec->strain_rate[i], avec->spin[i],
@@ -382,9 +383,9 @@ std::string FixSPHSoil::likely_causes(double density, double reference_density)
                                  "surface, where SPH is unstable: give the soil a tension cut-off "
                                  "('tension 0' of its model)", all_at_apex));
   if (std::isfinite(density) && !(density > 0.5 * reference_density && density < 2.0 * reference_density))
-    causes.push_back(fmt::format("its density is {:.3g} times its material's rho0 (never set with "
-                                 "'sph_soil/set ... density'? an expansion at a free surface, or a "
-                                 "leak through a wall?)", density / reference_density));
+    causes.push_back(fmt::format("its density is {:.3g} times its material's rho0 (an expansion at a "
+                                 "free surface, a leak through a wall, or a wrong 'sph_soil/set ... "
+                                 "density'?)", density / reference_density));
   const bigint behind = pair->soil_behind_walls();
   if (behind > 0)
     causes.push_back(fmt::format("{} soil particle(s) are behind a wall's plane: the soil crossed "

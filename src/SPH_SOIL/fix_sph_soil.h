@@ -77,8 +77,8 @@ class FixSPHSoil : public Fix {
 
   // The integrator's own per-atom state, one row per atom (the current rates live in the atom
   // style, where the pair style writes them): at the start of each step, the density's
-  // logarithmic rate (drho / rho) and the strain rate, for the Heun corrector. (The rates of the last step of a run, which the next
-  // run starts from, are the atom style's saved_rates.)
+  // logarithmic rate (drho / rho) and the strain rate, for the Heun corrector. (The rates of
+  // the last step of a run, which the next run starts from, are the atom style's saved_rates.)
   enum { HEUN_LOG_DRHO = 0, HEUN_STRAIN_RATE = 1, NSTATE = 7 };
   double **integrator_state;
   bool restore_pending;    // at the first step of a run: restore the saved rates

@@ -38,20 +38,28 @@ class SoilTest : public LAMMPSTest {
   void InitSystem() override { HIDE_OUTPUT([&] { command("units si"); }); }
 };
 
-// The commands that make a periodic 2D patch of soil, 20 x 16 particles at 1 cm on a disordered
-// lattice, with stresses that vary in space and no velocity (the caller sets it). Atom IDs
-// depend on the number of ranks (create_atoms), positions do not.
-inline const std::vector<std::string> &periodic_patch_commands()
+// The commands that make an empty periodic 2D box of one atom type on a square lattice of
+// 1 cm, its x and y extents in lattice spacings ("xlo xhi ylo yhi").
+inline std::vector<std::string> periodic_box_commands(const std::string &extent)
 {
-  static const std::vector<std::string> commands = {
-      "dimension 2", "boundary p p p", "atom_style sph/soil", "atom_modify map array",
-      "lattice sq 0.01", "region box block 0 20 0 16 -0.5 0.5", "create_box 1 box",
-      "create_atoms 1 box",
-      "variable xnew atom x+0.001*sin(1299*x+7823*y)",
-      "variable ynew atom y+0.001*sin(3711*x-4557*y)", "set group all x v_xnew y v_ynew",
+  return {"dimension 2", "boundary p p p", "atom_style sph/soil", "atom_modify map array",
+          "lattice sq 0.01", "region box block " + extent + " -0.5 0.5", "create_box 1 box"};
+}
+
+// The commands that make a periodic 2D patch of soil, 20 x 16 particles at 1 cm on a lattice
+// disordered by `disorder` (m, 1 mm by default: a tenth of the spacing), with stresses that vary
+// in space and no velocity (the caller sets it). Atom IDs depend on the number of ranks
+// (create_atoms), positions do not.
+inline std::vector<std::string> periodic_patch_commands(const std::string &disorder = "0.001")
+{
+  auto commands = periodic_box_commands("0 20 0 16");
+  const std::vector<std::string> patch = {
+      "create_atoms 1 box", "variable xnew atom x+" + disorder + "*sin(1299*x+7823*y)",
+      "variable ynew atom y+" + disorder + "*sin(3711*x-4557*y)", "set group all x v_xnew y v_ynew",
       "variable sxx atom -2000.0-300.0*sin(300*x)", "variable syy atom -1500.0+200.0*cos(250*y)",
       "variable sxy atom 100.0*sin(200*(x+y))",
       "sph_soil/set all mass 0.265 h 0.012 density 2650 stress v_sxx v_syy v_sxx v_sxy 0 0"};
+  commands.insert(commands.end(), patch.begin(), patch.end());
   return commands;
 }
 

@@ -205,18 +205,43 @@ def measure_run(log, dump, problem, key, label):
     level = s['c_soil[2]']
     spacing = d * 0.5 ** level
     h = 1.2 * d * smoothing_ratio(key) ** level
+    measures, profile = final_state(s, problem, spacing ** 2, h)
+    entry.update(measures)
+    entry['instability_index'] = round(instability_index(s['x'], s['y'], spacing, d), 5)
+    return entry, profile
+
+
+def final_state(s, problem, volume, h):
+    """What every study of a problem reads from a final dump `s` (particles of `volume` and `h`,
+    arrays or scalars): runout, failure angle, soil particles and, with an experiment, the
+    surface's RMS distance from it; and the profile (grid, surface, x, y, volume, h). The
+    thresholds are the problem's coarse spacing d's, at any spacing of the run: the runout where
+    the surface stands higher than d, the failure line of the soil that moved less than 0.75 d,
+    fitted per column of width d."""
+    spec = PROBLEMS[problem]
+    d = spec['d']
     x, y = s['x'], s['y']
-    entry['runout_m'], grid, top = analysis.runout(x, y, spacing ** 2, h, d, d)
+    measures = {}
+    measures['runout_m'], grid, top = analysis.runout(x, y, volume, h, d, d)
     moved = np.hypot(x - s['f_origin[1]'], y - s['f_origin[2]']) > 0.75 * d
-    entry['failure_angle_deg'] = round(analysis.failure_line(s['f_origin[1]'], s['f_origin[2]'], moved, d,
-                                                             spec['height'])[2], 2)
-    entry['instability_index'] = round(instability_index(x, y, spacing, d), 5)
-    entry['soil_particles'] = int(len(x))
+    measures['failure_angle_deg'] = round(analysis.failure_line(s['f_origin[1]'], s['f_origin[2]'], moved, d,
+                                                                spec['height'])[2], 2)
+    measures['soil_particles'] = int(len(x))
     if spec['experiment']:
         exp = experiment(problem)
-        sim = analysis.surface_height(x, y, spacing ** 2, h, exp[:, 0])
-        entry['surface_rms_vs_experiment_m'] = float(np.sqrt(np.mean((sim - exp[:, 1]) ** 2)))
-    return entry, (grid, top, x, y, spacing ** 2, h)
+        sim = analysis.surface_height(x, y, volume, h, exp[:, 0])
+        measures['surface_rms_vs_experiment_m'] = float(np.sqrt(np.mean((sim - exp[:, 1]) ** 2)))
+    return measures, (grid, top, x, y, volume, h)
+
+
+def surface_rms_between(fine, run, reach):
+    """RMS difference between the surface of profile `run` and that of profile `fine` (as
+    final_state() gives them) over x in [0, reach]."""
+    grid_f, top_f, *_ = fine
+    at = grid_f[grid_f <= reach]
+    _, _, x, y, volume, h = run
+    sim = analysis.surface_height(x, y, volume, h, at)
+    return float(np.sqrt(np.mean((sim - top_f[grid_f <= reach]) ** 2)))
 
 
 def experiment(problem):
@@ -244,12 +269,7 @@ def analyse(directory, problem):
             e['wall_us_per_soil_particle_step'] = (1e6 * e['wall_seconds'] / soil_steps
                                                    if soil_steps > 0 and e['wall_seconds'] else None)
     def rms_from(fine, run):
-        grid_f, top_f, *_ = profiles[fine]
-        reach = results[fine]['runout_m']
-        at = grid_f[grid_f <= reach]
-        _, _, x, y, volume, h = profiles[run]
-        sim = analysis.surface_height(x, y, volume, h, at)
-        return float(np.sqrt(np.mean((sim - top_f[grid_f <= reach]) ** 2)))
+        return surface_rms_between(profiles[fine], profiles[run], results[fine]['runout_m'])
 
     for key in profiles:
         fine = reference(key)

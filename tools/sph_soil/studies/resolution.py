@@ -5,7 +5,8 @@ Runs examples/refinement/in.refinement's uniform bars (in examples/refinement/re
 the 2 mm lattice's h = 2.4 mm on every pair (-var h0 1: pair_style sph/soil viscosity_h0), so that
 halving the spacing no longer halves the dissipation (doc/theory.rst 5.9). For each run: the final
 surface's RMS distance from the measured one, the runout and the failure angle (the measures of
-studies/refinement.py, the surface the 0.5 level of the SPH volume fraction); for each pair of
+the refinement comparison, refinement.final_state(), with the thresholds of the 2 mm lattice at
+every spacing; the surface the 0.5 level of the SPH volume fraction); for each pair of
 successive spacings the RMS difference of their surfaces over x up to the finer run's runout, and
 the observed order log2(e_1 / e_2) of two successive differences. Writes
 doc/refinement_resolution.json and doc/img/refinement_bars_fixed_dissipation.png.
@@ -19,18 +20,15 @@ A run is skipped when its final dump is newer than the input and the binary.
 import math
 import os
 
-import numpy as np
-
-from .. import analysis, paths, report, runner
+from .. import paths, report, runner
 from ..dumps import read_dump
 from . import refinement
 
 COMMAND = 'resolution'
 SPACINGS = (0.004, 0.002, 0.001)
 FINEST = 0.0005
-HEIGHT = 0.1         # the block's initial height (m)
-THRESHOLD = 0.002    # runout: the furthest x where the surface stands higher (m), as the other studies
-MOVED = 0.0015       # failure line: the soil that moved less than this (m), as the other studies
+# in.refinement's -var h0 1: the h of the problem's own lattice (1.2 d) on every pair
+VISCOSITY_H0 = 1.2 * refinement.PROBLEMS['bars']['d']
 
 
 def name_of(spacing):
@@ -53,30 +51,23 @@ def run_missing(lmp, spacings, np_, directory):
 
 
 def measure(spacings, directory):
-    experiment = refinement.experiment('bars')
-    grid = np.arange(0.0, 0.6, 0.0005)
-    runs, tops = [], {}
+    """The runs' measures (refinement.final_state(): the comparison's, with its thresholds of the
+    2 mm lattice at every spacing), the successive surface differences and the observed orders;
+    and the runs' profiles."""
+    runs, profiles = [], {}
     for d in spacings:
         dump = os.path.join(directory, f'dump.{name_of(d)}.final')
         if not os.path.exists(dump):
             continue
-        s = read_dump(dump)
-        x, y = s['x'], s['y']
-        top = analysis.surface_height(x, y, d * d, 1.2 * d, grid)
-        at_experiment = analysis.surface_height(x, y, d * d, 1.2 * d, experiment[:, 0])
-        moved = np.hypot(x - s['f_origin[1]'], y - s['f_origin[2]']) > MOVED
-        angle = analysis.failure_line(s['f_origin[1]'], s['f_origin[2]'], moved, d, HEIGHT)[2]
-        high = grid[top > THRESHOLD]
-        tops[d] = top
-        runs.append(dict(spacing_m=d, particles=int(len(x)),
-                         surface_rms_vs_experiment_m=round(float(np.sqrt(np.mean((at_experiment - experiment[:, 1]) ** 2))), 6),
-                         runout_m=round(float(high.max()) if len(high) else 0.0, 4),
-                         failure_angle_deg=round(float(angle), 2)))
+        measures, profiles[d] = refinement.final_state(read_dump(dump), 'bars', d * d, 1.2 * d)
+        runs.append(dict(spacing_m=d, particles=measures['soil_particles'],
+                         surface_rms_vs_experiment_m=round(measures['surface_rms_vs_experiment_m'], 6),
+                         runout_m=round(measures['runout_m'], 4),
+                         failure_angle_deg=measures['failure_angle_deg']))
     differences = []
     for coarse, fine in zip(runs, runs[1:]):
-        reach = fine['runout_m']
-        within = grid <= reach
-        rms = float(np.sqrt(np.mean((tops[coarse['spacing_m']][within] - tops[fine['spacing_m']][within]) ** 2)))
+        rms = refinement.surface_rms_between(profiles[fine['spacing_m']], profiles[coarse['spacing_m']],
+                                             fine['runout_m'])
         differences.append(dict(spacings_m=[coarse['spacing_m'], fine['spacing_m']], surface_rms_difference_m=round(rms, 6),
                                 angle_difference_deg=round(fine['failure_angle_deg'] - coarse['failure_angle_deg'], 2)))
     orders = []
@@ -86,24 +77,24 @@ def measure(spacings, directory):
         orders.append(dict(spacings_m=first['spacings_m'] + second['spacings_m'][1:],
                            surface_order=round(math.log2(e1 / e2), 2) if e2 > 0 else None,
                            angle_order=round(math.log2(a1 / a2), 2) if a2 > 0 else None))
-    return dict(viscosity_h0_m=0.0024, runs=runs, successive=differences, observed_order=orders), grid, tops, experiment
+    return dict(viscosity_h0_m=VISCOSITY_H0, runs=runs, successive=differences, observed_order=orders), profiles
 
 
-def plot(result, grid, tops, experiment, path):
-    import matplotlib
-    matplotlib.use('Agg')
-    import matplotlib.pyplot as plt
+def plot(result, profiles, path):
+    plt = report.pyplot()
+    experiment = refinement.experiment('bars')
     fig, ax = plt.subplots(figsize=(9, 3.4))
     for run in result['runs']:
-        d = run['spacing_m']
-        ax.plot(grid, tops[d], label=f"{1000 * d:g} mm: {1000 * run['surface_rms_vs_experiment_m']:.2f} mm from measured, "
-                                     f"runout {run['runout_m']:.3f} m, {run['failure_angle_deg']:.2f} deg")
+        grid, top, *_ = profiles[run['spacing_m']]
+        ax.plot(grid, top, label=f"{1000 * run['spacing_m']:g} mm: {1000 * run['surface_rms_vs_experiment_m']:.2f} mm "
+                                 f"from measured, runout {run['runout_m']:.3f} m, {run['failure_angle_deg']:.2f} deg")
     ax.plot(experiment[:, 0], experiment[:, 1], 'ko', ms=4, label='measured')
     ax.set_xlim(0, 0.55)
     ax.set_ylim(0, 0.11)
     ax.set_xlabel('x (m)')
     ax.set_ylabel('surface height (m)')
-    ax.set_title('Aluminium bars, the artificial viscosity of h = 2.4 mm at every spacing (viscosity_h0)', fontsize=10)
+    ax.set_title(f'Aluminium bars, the artificial viscosity of h = {1000 * VISCOSITY_H0:g} mm at every spacing '
+                 '(viscosity_h0)', fontsize=10)
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
@@ -123,6 +114,6 @@ def main(a):
     if not a.measure_only:
         os.makedirs(a.dir, exist_ok=True)
         run_missing(runner.from_arguments(a, build=True), spacings, a.np, a.dir)
-    result, grid, tops, experiment = measure(spacings, a.dir)
+    result, profiles = measure(spacings, a.dir)
     report.write_json(result, os.path.join(paths.ROOT, 'doc', 'refinement_resolution.json'), indent=1)
-    plot(result, grid, tops, experiment, os.path.join(paths.ROOT, 'doc', 'img', 'refinement_bars_fixed_dissipation.png'))
+    plot(result, profiles, os.path.join(paths.ROOT, 'doc', 'img', 'refinement_bars_fixed_dissipation.png'))
