@@ -199,6 +199,27 @@ TEST_F(Parallel, BalancedDeepRefinementAndMergingWithMigration)
   EXPECT_LT(largest, 0.1);
 }
 
+// Orphans across ranks: families short of a sibling (one daughter of each deleted) merge in
+// clusters by proximity, leaders and members on different ranks, while the soil drifts
+// through the domains; the same clusters, levels and state on 1, 2 and 4 ranks.
+TEST_F(Parallel, OrphansMergeInClustersAcrossRanks)
+{
+  write_patch(periodic_patch_commands("0.0003"));
+  expect_same_on_one_rank({"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
+                           "read_data parallel.data", "pair_style sph/soil",
+                           "pair_coeff 1 1 soil 2650 0.7e6 0.3 0 0 1e12",
+                           "fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin",
+                           "variable on equal step<20",
+                           "variable zone atom ((x-0.1)^2+(y-0.08)^2<0.05^2)*v_on",
+                           "fix refine all sph/soil/refine 10 criterion v_zone maxlevel 1 merge 1e-3",
+                           "fix balance all balance 50 1.0 shift xy 10 1.0", "thermo 0", "run 20 post no",
+                           "variable first atom id>320&&(id-321)%3==0", "group first variable first",
+                           "delete_atoms group first compress no", "run 300 post no"});
+  auto refine = lmp->modify->fix[lmp->modify->find_fix("refine")];
+  EXPECT_GT(refine->compute_vector(6), 10.0);    // clusters merged
+  EXPECT_EQ(refine->compute_vector(5), refine->compute_vector(6));
+}
+
 // A block sliding on a frictional floor (the Coulomb interface with its communication: the
 // contact sums of ghosts, the friction ratios, the walls' reactions) crossing rank boundaries,
 // with its interface pressures migrating with the atoms under dynamic balancing.

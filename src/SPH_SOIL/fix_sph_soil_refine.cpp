@@ -87,7 +87,7 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
   // global output: split this step, total split, particles of the group per level
   // 0..maxlevel, pairs more than one level apart at the last check, families merged
   vector_flag = 1;
-  size_vector = 2 + maxlevel + 1 + 2;
+  size_vector = 2 + maxlevel + 1 + 3;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -337,10 +337,10 @@ void FixSPHSoilRefine::post_run()
 {
   if (comm->me == 0)
     utils::logmesg(lmp, "fix sph/soil/refine: {} particles split in this run ({} for the 2:1 "
-                        "balance), {} families merged; the most pairs more than one level apart "
-                        "at a check: {}\n",
-                   run_split, run_forced, run_merged, run_unbalanced);
-  run_split = run_forced = run_unbalanced = run_merged = 0;
+                        "balance), {} merges ({} of them clusters of orphans); the most pairs more "
+                        "than one level apart at a check: {}\n",
+                   run_split, run_forced, run_merged, run_clusters, run_unbalanced);
+  run_split = run_forced = run_unbalanced = run_merged = run_clusters = 0;
 }
 
 /* ----------------------------------------------------------------------
@@ -367,16 +367,17 @@ void FixSPHSoilRefine::reneighbour()
 /* ----------------------------------------------------------------------
    1: particles split at this step, 2: split since the fix was defined,
    3..: particles of the group at level 0, 1, ..., maxlevel (the last counts deeper levels too),
-   then the pairs more than one level apart at the last check (before its splits), the families
-   merged since the fix was defined
+   then the pairs more than one level apart at the last check (before its splits), the merges
+   since the fix was defined (families and clusters of orphans), of which clusters of orphans
 ------------------------------------------------------------------------- */
 
 double FixSPHSoilRefine::compute_vector(int n)
 {
   if (n == 0) return last_split_step == update->ntimestep ? (double) last_split : 0.0;
   if (n == 1) return (double) total_split;
-  if (n == size_vector - 2) return (double) last_unbalanced;
-  if (n == size_vector - 1) return (double) total_merged;
+  if (n == size_vector - 3) return (double) last_unbalanced;
+  if (n == size_vector - 2) return (double) total_merged;
+  if (n == size_vector - 1) return (double) total_clusters;
   const int wanted = n - 2;
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   bigint count = 0, all = 0;
@@ -400,7 +401,7 @@ void FixSPHSoilRefine::write_restart(FILE *fp)
   fwrite(data, sizeof(double), 1, fp);
 }
 
-// (the families merged are counted from the fix's definition in this input, not kept: files
+// (the merges are counted from the fix's definition in this input, not kept: files
 // from before merging hold the total split alone, and LAMMPS does not pass the size)
 void FixSPHSoilRefine::restart(char *buf)
 {
@@ -511,6 +512,8 @@ void FixSPHSoilRefine::merge()
   next_reneighbor = update->ntimestep + 1;
   total_merged += merged;
   run_merged += merged;
+  total_clusters += merger->clusters_merged();
+  run_clusters += merger->clusters_merged();
 }
 
 int FixSPHSoilRefine::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)

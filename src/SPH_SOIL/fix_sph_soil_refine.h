@@ -7,8 +7,8 @@
    threshold), and whose level is below maxlevel, is split into 4 (2D) or 8
    (3D) daughters, keeping neighbours within one level of each other (2:1
    balance, sph_soil_refine_balance.h), and with `merge T` merges siblings
-   that have been quiet for a time T back into their parent
-   (sph_soil_refine_merger.h). Per atom it keeps the total strain at each
+   that have been quiet for a time T back into their parent, and particles of
+   families torn apart in clusters (sph_soil_refine_merger.h). Per atom it keeps the total strain at each
    particle's birth (a criterion judges a daughter on what it has done since),
    since when it has been quiet, and its ancestors' IDs (its families).
    See doc/fix_sph_soil_refine.rst.
@@ -70,7 +70,8 @@ class FixSPHSoilRefine : public Fix {
   // per atom: the history of RefineHistory (sph_soil_refine_criterion.h)
   double **strain_at_birth, *quiet_since, **family;
   double merge_time;           // merge: siblings quiet for this time merge (0: no merging)
-  bigint total_merged;         // families merged since the fix was defined
+  bigint total_merged;         // merges since the fix was defined (families and clusters)
+  bigint total_clusters = 0;   // of them, clusters of orphans
   class FixSPHSoil *integrator;
   bool parameters_reported;
   double bytes_per_particle, node_bytes;    // at set-up: a split that would not fit stops
@@ -95,7 +96,7 @@ class FixSPHSoilRefine : public Fix {
   void mark_quiet();
   void merge();
   std::unique_ptr<class SPHSoilRefineMerger> merger;    // with merge T
-  bigint run_merged = 0;
+  bigint run_merged = 0, run_clusters = 0;
 
   void reneighbour();
   void report_parameters();

@@ -10,7 +10,10 @@
    particle is one level coarser: the 2:1 balance holds). The owner of
    daughter 0 (which kept the parent's ID) decides, from its own and the
    ghosts' values, and writes the merged particle into daughter 0's slot; the
-   others' owners delete them (a reverse communication of flags).
+   others' owners delete them (a reverse communication of flags). Particles
+   quiet for twice the hold time whose family has not merged become orphans and
+   merge in clusters by proximity (soil_refine_clusters.h), each cluster's
+   leader deciding as daughter 0 does.
 ------------------------------------------------------------------------- */
 
 #include "sph_soil_refine_merger.h"
@@ -25,6 +28,7 @@
 #include "pair.h"
 #include "soil_constitutive.h"
 #include "soil_kernels.h"
+#include "soil_refine_clusters.h"
 #include "soil_refine_split.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
@@ -41,8 +45,10 @@ using namespace LAMMPS_NS;
 
 namespace {
 // a row of the merge's per-atom buffer (owned atoms fill theirs, ghosts get theirs by forward
-// communication): ready, family at its level, level, force, velocity, the averaged values
-enum { READY = 0, FAMILY = 1, LEVEL = 2, FORCE = 3, VELOCITY = 6, VALUES = 9 };
+// communication): ready, family at its level, level, a cluster's leader, the leader joined,
+// density (a ghost's own is a step old here: fix sph/soil steps it after the ghosts' update),
+// force, velocity, the averaged values
+enum { READY = 0, FAMILY = 1, LEVEL = 2, LEADER = 3, JOINED = 4, DENSITY = 5, FORCE = 6, VELOCITY = 9, VALUES = 12 };
 }    // namespace
 
 SPHSoilRefineMerger::~SPHSoilRefineMerger()
@@ -51,7 +57,7 @@ SPHSoilRefineMerger::~SPHSoilRefineMerger()
 }
 
 /* ----------------------------------------------------------------------
-   the values a merge mass-averages: stress, total strain, strain at birth, stress rate,
+   the values a merge mass-averages: stress, total strain, stress rate,
    strain rate, spin, the density rate per density (so that the merged particle's volume
    changes at the rate of the siblings' together)
 ------------------------------------------------------------------------- */
@@ -62,7 +68,6 @@ void SPHSoilRefineMerger::merge_values(int i, double *values) const
   int m = 0;
   for (int k = 0; k < 6; k++) values[m++] = avec->stress[i][k];
   for (int k = 0; k < 6; k++) values[m++] = avec->total_strain[i][k];
-  for (int k = 0; k < 6; k++) values[m++] = state.strain_at_birth[i][k];
   for (int k = 0; k < 6; k++) values[m++] = avec->stress_rate[i][k];
   for (int k = 0; k < 6; k++) values[m++] = avec->strain_rate[i][k];
   for (int k = 0; k < 3; k++) values[m++] = avec->spin[i][k];
@@ -70,8 +75,8 @@ void SPHSoilRefineMerger::merge_values(int i, double *values) const
 }
 
 /* ----------------------------------------------------------------------
-   merge the families that may; the ghosts must be current (after a reneighbouring).
-   Returns the families merged on all ranks; if any, the ghosts are gone (the caller
+   merge the families and clusters of orphans that may; the ghosts must be current (after a
+   reneighbouring). Returns the merges on all ranks; if any, the ghosts are gone (the caller
    reneighbours). Collective.
 ------------------------------------------------------------------------- */
 
@@ -79,10 +84,11 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
                                   int nevery)
 {
   state = history;
-  double **family = state.family, *quiet_since = state.quiet_since, **strain_at_birth = state.strain_at_birth;
+  double **family = state.family, *quiet_since = state.quiet_since;
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int nlocal = atom->nlocal;
   const double now = SPHSoilFixes::elapsed_time(update);
+  last_clusters = 0;
 
   // a family must have been quiet for the hold time: looking four times per hold time is
   // enough (a merge comes at most a quarter of it late), and spares the checks in between. The
@@ -91,30 +97,32 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
   const double quarter = 0.25 * merge_time, since_last_check = nevery * update->dt;
   if (std::floor(now / quarter) == std::floor((now - since_last_check) / quarter)) return 0;
 
-  // candidates: quiet for the hold time, of a known family
-  std::vector<char> ready(nlocal, 0);
+  // candidates: quiet for the hold time, of a known family or orphans
+  // orphan: an orphan that takes part in this look's clusters
+  std::vector<char> ready(nlocal, 0), orphan(nlocal, 0);
   int candidates = 0, any = 0;
+  const double tolerance = 1.0 - 1.0e-12;
   for (int i = 0; i < nlocal; i++) {
     const int level = avec->level[i];
     if (!(atom->mask[i] & groupbit) || level < 1 || level > maxlevel) continue;
     if (family[i][level - 1] == 0.0 || quiet_since[i] < 0.0) continue;
-    if (now - quiet_since[i] < merge_time * (1.0 - 1.0e-12)) continue;
+    if (now - quiet_since[i] < merge_time * tolerance) continue;
     ready[i] = 1;
     candidates++;
   }
   MPI_Allreduce(&candidates, &any, 1, MPI_INT, MPI_MAX, world);
   if (!any) return 0;
 
-  // Daughters 0 (which kept their parent's ID) search their neighbourhood: the siblings, and
-  // whether a particle finer than the family lies within the reach of the particle it would
-  // merge into (one level coarser: the 2:1 balance must hold, and the balance must not split
-  // it again at once). That reach, B kappa h_p about the centre of mass, which lies within
-  // about 0.3 h_p of daughter 0, is within (B kappa + 0.3) h_p = (1 + 0.1) B kappa h_p.
-  std::vector<char> searching(nlocal, 0);
-  for (int i = 0; i < nlocal; i++)
-    searching[i] = ready[i] && (double) atom->tag[i] == family[i][avec->level[i] - 1];
-  const double parent_scale = 1.1 / splitter.smoothing_ratio;
-  balance.prepare(groupbit, SPHSoil::kernel_support(splitter.kernel_kind()), parent_scale, &searching);
+  // The candidates search their neighbourhood: the siblings (daughters 0, which kept their
+  // parent's ID, decide) or the other orphans, and whether a particle finer than they are lies
+  // within the reach of the particle they would merge into (one level coarser: the 2:1 balance
+  // must hold, and the balance must not split it again at once). That reach, B kappa h_p about
+  // the centre of mass, which lies within about 0.3 h_p of daughter 0 and within h_p of a
+  // cluster's leader (below), is within (B kappa + 1) h_p of either; a cluster's orphans lie
+  // within h_p of their leader, inside it.
+  const double support = SPHSoil::kernel_support(splitter.kernel_kind());
+  const double reach = SPHSoilRefineBalance::BUFFER * support;
+  balance.prepare(groupbit, support, (reach + 1.0) / reach / splitter.smoothing_ratio, &ready);
 
   // every atom's row: the owned ones here, the ghosts' by forward communication
   if (atom->nmax > merge_rows) {
@@ -128,6 +136,8 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
     row[READY] = ready[i];
     row[FAMILY] = level >= 1 && level <= maxlevel ? family[i][level - 1] : 0.0;
     row[LEVEL] = level;
+    row[LEADER] = row[JOINED] = 0.0;
+    row[DENSITY] = atom->rho[i];
     for (int a = 0; a < 3; a++) {
       row[FORCE + a] = atom->f[i][a];
       row[VELOCITY + a] = atom->v[i][a];
@@ -136,84 +146,102 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
   }
   SPHSoilCompat::forward_comm_fix(comm, fix);
 
-  // the owners of daughter 0 decide and merge
+  // A candidate that does not find all its siblings within its parent's smoothing length (the
+  // flow has torn the family apart, or a sibling is gone) leaves the family: an orphan. Where
+  // every sibling finds every other within h_p, all lie within h_p of their centre of mass
+  // (the family's merge below); where one does not, it leaves, its family cannot merge, and the
+  // others leave at a later look. The orphans' new family goes to the ghosts before anything
+  // is decided, so that a family's search (daughter 0's) and the clusters' see the same.
+  const int count = SPHSoil::daughter_count(domain->dimension);
+  double **x = atom->x;
+  std::vector<char> searching(nlocal, 0);
+  int orphans = 0, any_orphans = 0, changed = 0, any_changed = 0;    // changed: rows
+  for (int i = 0; i < nlocal; i++) {
+    if (!ready[i]) continue;
+    const int level = avec->level[i];
+    double &own_family = family[i][level - 1];
+    // one with a finer neighbour waits for that to merge first (a sibling that split again is
+    // one, and no longer of this level)
+    const bool waits = balance.finest_neighbour(i) > level;
+    if (own_family > 0.0 && !waits) {
+      const double parent_h = avec->smoothing_length[i] / splitter.smoothing_ratio;
+      std::map<tagint, bool> siblings;
+      balance.for_each_neighbour(i, [&](int j) {
+        const double *row = merge_buffer[j];
+        if ((int) row[LEVEL] != level || row[FAMILY] != own_family || atom->tag[j] == atom->tag[i]) return;
+        double r2 = 0.0;
+        for (int a = 0; a < domain->dimension; a++) r2 += (x[j][a] - x[i][a]) * (x[j][a] - x[i][a]);
+        if (r2 <= parent_h * parent_h) siblings[atom->tag[j]] = true;
+      });
+      // (the rows keep the families of before until all have decided: the same on any ranks)
+      if ((int) siblings.size() < count - 1) {
+        own_family = ORPHAN;
+        changed++;
+      }
+    }
+    orphan[i] = own_family == ORPHAN && !waits;
+    orphans += orphan[i];
+    searching[i] = (orphan[i] || (double) atom->tag[i] == own_family) && !waits;
+    // an orphan that waits takes no part in the clusters (its row is not ready)
+    if (own_family == ORPHAN && waits) changed++;
+  }
+  for (int i = 0; i < nlocal; i++) {
+    const int level = avec->level[i];
+    if (!ready[i] || family[i][level - 1] != ORPHAN) continue;
+    merge_buffer[i][FAMILY] = ORPHAN;
+    if (!orphan[i]) merge_buffer[i][READY] = 0.0;
+  }
+  MPI_Allreduce(&changed, &any_changed, 1, MPI_INT, MPI_MAX, world);
+  if (any_changed) SPHSoilCompat::forward_comm_fix(comm, fix);
+  MPI_Allreduce(&orphans, &any_orphans, 1, MPI_INT, MPI_MAX, world);
+  if (any_orphans) find_clusters(fix, orphan);
+
+  // the owners of daughter 0 and the clusters' leaders decide and merge
   const int nall = nlocal + atom->nghost;
   std::vector<char> to_delete(nall, 0);
-  const int count = SPHSoil::daughter_count(domain->dimension);
-  int merged = 0;
-  double **x = atom->x;
+  int merged = 0, clusters = 0;
+  std::vector<int> members;
   for (int i = 0; i < nlocal; i++) {
     const double *own = merge_buffer[i];
     const int level = avec->level[i];
-    if (!searching[i] || balance.finest_neighbour(i) > level) continue;
-    // the siblings among the neighbours, one image each (the nearest)
-    std::map<tagint, int> siblings;
+    if (!searching[i]) continue;
+    // the siblings (or the orphans that joined this leader) among the neighbours, one image
+    // each (the nearest)
+    std::map<tagint, std::pair<int, double>> found;
     bool complete = true;
-    auto distance2 = [&](int k, const double *p) {
-      double r2 = 0.0;
-      for (int a = 0; a < domain->dimension; a++) r2 += (x[k][a] - p[a]) * (x[k][a] - p[a]);
-      return r2;
-    };
+    const double tag = (double) atom->tag[i];
     balance.for_each_neighbour(i, [&](int j) {
       const double *row = merge_buffer[j];
-      if ((int) row[LEVEL] != level || row[FAMILY] != own[FAMILY]) return;
+      if ((int) row[LEVEL] != level || atom->tag[j] == atom->tag[i]) return;
+      if (orphan[i] ? row[JOINED] != tag : row[FAMILY] != own[FAMILY]) return;
       if (row[READY] == 0.0) complete = false;
-      const auto found = siblings.find(atom->tag[j]);
-      if (found == siblings.end() || distance2(j, x[i]) < distance2(found->second, x[i]))
-        siblings[atom->tag[j]] = j;
+      double r2 = 0.0;
+      for (int a = 0; a < domain->dimension; a++) r2 += (x[j][a] - x[i][a]) * (x[j][a] - x[i][a]);
+      const auto seen = found.find(atom->tag[j]);
+      if (seen == found.end() || r2 < seen->second.second) found[atom->tag[j]] = {j, r2};
     });
-    siblings.erase(atom->tag[i]);
-    if (!complete || (int) siblings.size() != count - 1) continue;
-
-    SPHSoil::MergeSum<MERGE_VALUES> sum;
-    auto add = [&](int k) {
-      const double *row = merge_buffer[k];
-      sum.add(atom->rmass[k], atom->rho[k], x[k], row + VELOCITY, row + FORCE, row + VALUES);
-    };
-    add(i);
-    for (const auto &s : siblings) add(s.second);
-    // a family torn apart by the flow does not merge: every sibling within the parent's
-    // smoothing length of the centre of mass
-    double centre[3];
-    sum.position(centre);
-    const double parent_h = avec->smoothing_length[i] / splitter.smoothing_ratio;
-    bool together = distance2(i, centre) <= parent_h * parent_h;
-    for (const auto &s : siblings) together = together && distance2(s.second, centre) <= parent_h * parent_h;
-    if (!together) continue;
-
-    // the merged particle in daughter 0's slot
-    for (int a = 0; a < 3; a++) x[i][a] = centre[a];
-    sum.velocity(atom->v[i]);
-    for (int a = 0; a < 3; a++) {
-      atom->vest[i][a] = atom->v[i][a];
-      atom->f[i][a] = sum.force[a];
+    members.clear();
+    if (orphan[i]) {
+      if (own[LEADER] == 0.0) continue;
+      std::vector<SPHSoil::NearOrphan> joined;
+      for (const auto &f : found) joined.push_back({(double) f.first, f.second.second, f.second.first});
+      for (const auto &m : SPHSoil::cluster_members(joined, count - 1)) members.push_back(m.index);
+    } else {
+      if (!complete) continue;
+      for (const auto &f : found) members.push_back(f.second.first);
     }
-    atom->rmass[i] = sum.mass;
-    atom->rho[i] = sum.density();
-    double values[MERGE_VALUES];
-    sum.averages(values);
-    int m = 0;
-    for (int k = 0; k < 6; k++) avec->stress[i][k] = values[m++];
-    for (int k = 0; k < 6; k++) avec->total_strain[i][k] = values[m++];
-    for (int k = 0; k < 6; k++) strain_at_birth[i][k] = values[m++];
-    for (int k = 0; k < 6; k++) avec->stress_rate[i][k] = values[m++];
-    for (int k = 0; k < 6; k++) avec->strain_rate[i][k] = values[m++];
-    for (int k = 0; k < 3; k++) avec->spin[i][k] = values[m++];
-    atom->drho[i] = values[m++] * atom->rho[i];
-    splitter.return_to_admissible(i);
-    avec->smoothing_length[i] = parent_h;
-    avec->level[i] = level - 1;
-    family[i][level - 1] = 0.0;
-    quiet_since[i] = now;
-    for (const auto &s : siblings) to_delete[s.second] = 1;
+    if ((int) members.size() != count - 1 || !merge_into(i, members, now)) continue;
+    for (int j : members) to_delete[j] = 1;
     merged++;
+    clusters += orphan[i];
   }
 
-  bigint mine = merged, all = 0;
-  MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (all == 0) return 0;
+  bigint mine[2] = {merged, clusters}, all[2] = {0, 0};
+  MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  last_clusters = all[1];
+  if (all[0] == 0) return 0;
 
-  // the siblings' owners delete them (the flags of ghosts travel back to their owners)
+  // the members' owners delete them (the flags of ghosts travel back to their owners)
   for (int j = 0; j < nall; j++) merge_buffer[j][0] = to_delete[j];
   SPHSoilCompat::reverse_comm_fix(comm, fix);
   std::vector<char> gone(nlocal);
@@ -233,7 +261,100 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
   }
   atom->nlocal = n;
   SPHSoilFixes::recount_atoms(atom, world);
-  return all;
+  return all[0];
+}
+
+/* ----------------------------------------------------------------------
+   the clusters of orphans (soil_refine_clusters.h): the leaders, then whom each orphan
+   joins, each round's values to the ghosts. Reach: the parent's smoothing length.
+------------------------------------------------------------------------- */
+
+void SPHSoilRefineMerger::find_clusters(Fix *fix, const std::vector<char> &orphan)
+{
+  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  const int nlocal = atom->nlocal;
+  double **x = atom->x;
+  auto near = [&](int i, int column) {
+    // the orphans of i's level within its reach (column: any, or leaders only)
+    std::vector<SPHSoil::NearOrphan> within;
+    const double reach = avec->smoothing_length[i] / splitter.smoothing_ratio;
+    balance.for_each_neighbour(i, [&](int j) {
+      const double *row = merge_buffer[j];
+      if (row[READY] == 0.0 || row[FAMILY] != ORPHAN || (int) row[LEVEL] != avec->level[i]) return;
+      if (atom->tag[j] == atom->tag[i] || (column >= 0 && row[column] == 0.0)) return;
+      double r2 = 0.0;
+      for (int a = 0; a < domain->dimension; a++) r2 += (x[j][a] - x[i][a]) * (x[j][a] - x[i][a]);
+      if (r2 <= reach * reach) within.push_back({(double) atom->tag[j], r2, j});
+    });
+    return within;
+  };
+  for (int i = 0; i < nlocal; i++)
+    if (orphan[i]) merge_buffer[i][LEADER] = SPHSoil::leads_cluster((double) atom->tag[i], near(i, -1));
+  SPHSoilCompat::forward_comm_fix(comm, fix);
+  for (int i = 0; i < nlocal; i++)
+    if (orphan[i] && merge_buffer[i][LEADER] == 0.0) merge_buffer[i][JOINED] = SPHSoil::joined_leader(near(i, LEADER));
+  SPHSoilCompat::forward_comm_fix(comm, fix);
+}
+
+/* ----------------------------------------------------------------------
+   merge owned particle i and `members` (owned or ghosts) into i's slot, one level coarser:
+   mass, momentum and volume conserved, the rest mass-averaged, the stress returned to the
+   admissible set. Not if the flow has torn them apart: every one within the parent's
+   smoothing length of their centre of mass. Whether it merged.
+------------------------------------------------------------------------- */
+
+bool SPHSoilRefineMerger::merge_into(int i, const std::vector<int> &members, double now)
+{
+  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  double **x = atom->x;
+  SPHSoil::MergeSum<MERGE_VALUES> sum;
+  auto add = [&](int k) {
+    const double *row = merge_buffer[k];
+    sum.add(atom->rmass[k], row[DENSITY], x[k], row + VELOCITY, row + FORCE, row + VALUES);
+  };
+  add(i);
+  for (int j : members) add(j);
+  double centre[3];
+  sum.position(centre);
+  const double parent_h = avec->smoothing_length[i] / splitter.smoothing_ratio;
+  auto within = [&](int k) {
+    double r2 = 0.0;
+    for (int a = 0; a < domain->dimension; a++) r2 += (x[k][a] - centre[a]) * (x[k][a] - centre[a]);
+    return r2 <= parent_h * parent_h;
+  };
+  if (!within(i)) return false;
+  for (int j : members)
+    if (!within(j)) return false;
+
+  const int level = avec->level[i];
+  for (int a = 0; a < 3; a++) x[i][a] = centre[a];
+  sum.velocity(atom->v[i]);
+  for (int a = 0; a < 3; a++) {
+    atom->vest[i][a] = atom->v[i][a];
+    atom->f[i][a] = sum.force[a];
+  }
+  atom->rmass[i] = sum.mass;
+  atom->rho[i] = sum.density();
+  double values[MERGE_VALUES];
+  sum.averages(values);
+  int m = 0;
+  for (int k = 0; k < 6; k++) avec->stress[i][k] = values[m++];
+  for (int k = 0; k < 6; k++) avec->total_strain[i][k] = values[m++];
+  // born now: a criterion of the strain since the split judges it from here. (The mass
+  // average of its members' strains at birth would hand it the strain they gathered since
+  // their split, above the threshold wherever they sat at maxlevel: it would split again at
+  // the next check, and merge again, and so on.)
+  for (int k = 0; k < 6; k++) state.strain_at_birth[i][k] = avec->total_strain[i][k];
+  for (int k = 0; k < 6; k++) avec->stress_rate[i][k] = values[m++];
+  for (int k = 0; k < 6; k++) avec->strain_rate[i][k] = values[m++];
+  for (int k = 0; k < 3; k++) avec->spin[i][k] = values[m++];
+  atom->drho[i] = values[m++] * atom->rho[i];
+  splitter.return_to_admissible(i);
+  avec->smoothing_length[i] = parent_h;
+  avec->level[i] = level - 1;
+  state.family[i][level - 1] = 0.0;
+  state.quiet_since[i] = now;
+  return true;
 }
 
 /* ----------------------------------------------------------------------

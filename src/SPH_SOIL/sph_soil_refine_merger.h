@@ -8,7 +8,11 @@
    their parent's smoothing length of their centre of mass, and no particle
    finer than they are lies within the merged particle's reach (the 2:1 balance
    holds). The owner of daughter 0 decides and writes the merged particle into
-   daughter 0's slot; the others' owners delete them.
+   daughter 0's slot; the others' owners delete them. A family that has not
+   merged after twice the hold time (torn apart by the flow, or short of a
+   sibling) breaks up: its members become orphans, which merge in clusters of
+   as many by proximity (soil_refine_clusters.h), the cluster's leader
+   deciding as daughter 0 does.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SPH_SOIL_REFINE_MERGER_H
@@ -16,6 +20,8 @@
 
 #include "pointers.h"
 #include "sph_soil_refine_criterion.h"
+
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -29,19 +35,22 @@ class SPHSoilRefineMerger : protected Pointers {
   ~SPHSoilRefineMerger() override;
 
   // the values a merge mass-averages per atom, and the row each atom sends to the ghosts
-  static constexpr int MERGE_VALUES = 6 + 6 + 6 + 6 + 6 + 3 + 1;
-  static constexpr int MERGE_ROW = 9 + MERGE_VALUES;
+  static constexpr int MERGE_VALUES = 6 + 6 + 6 + 6 + 3 + 1;
+  static constexpr int MERGE_ROW = 12 + MERGE_VALUES;
+  // the family of an orphan at its level (0: none known, > 0: the parent's ID)
+  static constexpr double ORPHAN = -1.0;
 
   // Merge the families of `groupbit` that may, at a check of a fix every `nevery` steps whose
   // communication callbacks call this object's; the ghosts must be current. Returns the
-  // families merged on all ranks; if any, the ghosts are gone (the caller reneighbours).
-  // Collective.
+  // merges on all ranks (families and clusters of orphans); if any, the ghosts are gone (the
+  // caller reneighbours). Collective.
   bigint merge(class Fix *fix, const RefineHistory &history, int groupbit, int maxlevel, int nevery);
 
   int pack_forward_comm(int n, int *list, double *buf);
   void unpack_forward_comm(int n, int first, double *buf);
   int pack_reverse_comm(int n, int first, double *buf);
   void unpack_reverse_comm(int n, int *list, double *buf);
+  bigint clusters_merged() const { return last_clusters; }    // of the last merge()
   double memory_usage() const { return (double) merge_rows * MERGE_ROW * sizeof(double); }
 
  private:
@@ -51,7 +60,10 @@ class SPHSoilRefineMerger : protected Pointers {
   RefineHistory state;
   double **merge_buffer = nullptr;    // the rows of owned atoms and ghosts
   int merge_rows = 0;
+  bigint last_clusters = 0;
   void merge_values(int i, double *values) const;
+  void find_clusters(class Fix *fix, const std::vector<char> &orphan);
+  bool merge_into(int i, const std::vector<int> &members, double now);
 };
 
 }    // namespace LAMMPS_NS

@@ -28,3 +28,13 @@ def add_run_arguments(parser, directory, holds):
     parser.add_argument('--dir', default=directory, help=f'directory with {holds} (default: %(default)s)')
     parser.add_argument('--json', default=None, help='write the numbers here too')
     parser.add_argument('--plot', default=None, help='PNG plot')
+
+
+def rst_table(header, rows):
+    """A simple reStructuredText table of `header` (strings) and `rows` (lists of strings)."""
+    widths = [max(len(header[k]), *(len(r[k]) for r in rows)) for k in range(len(header))]
+    sep = '  '.join('=' * w for w in widths)
+    lines = [sep, '  '.join(h.ljust(w) for h, w in zip(header, widths)), sep]
+    lines += ['  '.join(v.ljust(w) for v, w in zip(r, widths)) for r in rows]
+    lines.append(sep)
+    return '\n'.join(lines)

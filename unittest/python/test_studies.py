@@ -10,6 +10,7 @@ import sys
 import pytest
 
 from sph_soil import cli, examples, paths, regression
+from sph_soil.logs import Log
 from sph_soil.studies import EXAMPLE_REPORTS, STUDIES, refinement
 
 REFINEMENT_LOGS = {name[len('log.'):] for name in os.listdir(refinement.DIRECTORY)
@@ -161,3 +162,15 @@ def test_sliding_block_measures_a_rigid_block(tmp_path):
     result, _ = sliding_block.measure(str(path), mu, ratio)
     assert result['acceleration_over_rigid'] == pytest.approx(1.0, rel=1e-9)
     assert result['shear_over_normal_error'] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_levels_names_are_those_in_refinement_gives(lmp, tmp_path):
+    # the deep-refinement study finds each run's final dump by the name in.refinement builds
+    from sph_soil.studies import levels
+    cases = [r for r in levels.runs('collapse', [1, 2])] + [levels.runs('bars', [2])[-1]]
+    cases += [(levels.uniform_name('bars', 0.0005), '', [('problem', 'bars'), ('mode', 'coarse'), ('h0', '1'),
+                                                          ('spacing', '0.0005')], 0, False)]
+    for name, _, variables, _, _ in cases:
+        result = lmp.run(refinement.INPUT, str(tmp_path), variables=list(variables) + [('steps', '0')],
+                         log='log.test', check=True)
+        assert Log(result.log).search(r'^refinement: run (\S+) ', re.M).group(1) == name

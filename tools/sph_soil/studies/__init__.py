@@ -2,10 +2,10 @@
 draws. Each has COMMAND (its name on the command line), add_arguments(parser) and main(args); a
 study of one example also has report_example(directory, log, variables, seconds), which
 tools/run_example.sh calls on the example's single run to leave its plot and numbers beside it."""
-from . import (aluminium_bars, atom_style, bearing_capacity, footing, gate, refine_map, refinement,
+from . import (aluminium_bars, atom_style, bearing_capacity, footing, gate, levels, refine_map, refinement,
                resolution, retaining_wall, sliding_block, soil_collapse, strength_reduction, vertical_cut)
 
-STUDIES = [aluminium_bars, atom_style, bearing_capacity, footing, gate, refinement, refine_map,
+STUDIES = [aluminium_bars, atom_style, bearing_capacity, footing, gate, levels, refinement, refine_map,
            resolution, retaining_wall, sliding_block, soil_collapse, strength_reduction, vertical_cut]
 
 # example (examples/NAME/in.NAME) -> the study that measures and plots its single run

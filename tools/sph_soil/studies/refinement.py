@@ -371,6 +371,25 @@ def cost_figure(problem, results, out):
     plt.close(fig)
 
 
+def table_rows(entries, cols):
+    """The rows of a table of `entries` (dicts) in columns (field, header, format): distances of
+    surfaces (fields ending in _m that are an RMS or a difference) in mm; a missing value of a run
+    that stopped is 'stopped', else '-'."""
+    rows = []
+    for e in entries:
+        row = []
+        for field, _, fmt in cols:
+            v = e.get(field)
+            if v is None or (isinstance(v, float) and math.isnan(v)):
+                row.append('stopped' if not e.get('completed') and field != 'run' else '-')
+            elif field.endswith('_m') and ('rms' in field or 'difference' in field):
+                row.append(fmt.format(1000 * v))
+            else:
+                row.append(fmt.format(v))
+        rows.append(row)
+    return rows
+
+
 def table(problem, results):
     cols = [('run', 'run', '{}'), ('wall_seconds', 'wall (s)', '{:.0f}'),
             ('wall_us_per_particle_step', 'us/particle-step', '{:.3f}'),
@@ -382,32 +401,8 @@ def table(problem, results):
             ('instability_index', 'instability', '{:.4f}')]
     if not PROBLEMS[problem]['experiment']:
         cols = [c for c in cols if c[0] != 'surface_rms_vs_experiment_m']
-    lines = []
-    rows = []
-    for key in LABELS:
-        if key not in results:
-            continue
-        e = results[key]
-        row = []
-        for field, _, fmt in cols:
-            v = e.get(field)
-            if v is None or (isinstance(v, float) and math.isnan(v)):
-                row.append('stopped' if not e.get('completed') and field != 'run' else '-')
-            elif field.endswith('_m') and 'rms' in field:
-                row.append(fmt.format(1000 * v))
-            else:
-                row.append(fmt.format(v))
-        rows.append(row)
-    header = [c[1] for c in cols]
-    widths = [max(len(header[k]), *(len(r[k]) for r in rows)) for k in range(len(cols))]
-    sep = '  '.join('=' * w for w in widths)
-    lines.append(sep)
-    lines.append('  '.join(h.ljust(w) for h, w in zip(header, widths)))
-    lines.append(sep)
-    for r in rows:
-        lines.append('  '.join(v.ljust(w) for v, w in zip(r, widths)))
-    lines.append(sep)
-    return '\n'.join(lines)
+    rows = table_rows([results[key] for key in LABELS if key in results], cols)
+    return report.rst_table([c[1] for c in cols], rows)
 
 
 def run_matrix(lmp, problems, np, only=None, two_levels=False, directory=DIRECTORY):
