@@ -90,6 +90,18 @@ class Parallel : public SoilTest {
     });
   }
 
+  // the periodic patch of parallel.data as an elastic solid (phi = 0, a huge cohesion: see
+  // RefinementWithMigrationAndBalancing) with an adaptive step, then `then`
+  static std::vector<std::string> elastic_patch(const std::vector<std::string> &then)
+  {
+    std::vector<std::string> run = {"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
+                                    "read_data parallel.data", "pair_style sph/soil",
+                                    "pair_coeff 1 1 soil 2650 0.7e6 0.3 0 0 1e12",
+                                    "fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin"};
+    run.insert(run.end(), then.begin(), then.end());
+    return run;
+  }
+
   // runs `run` on all ranks and on rank 0 alone; compares the two on rank 0
   void expect_same_on_one_rank(const std::vector<std::string> &run)
   {
@@ -152,13 +164,9 @@ TEST_F(Parallel, RefinementWithMigrationAndBalancing)
   // particles come to lie, whether a particle is on the surface flips at round-off and its
   // stress rate with it (measured: 1.5 Pa in one particle's stress after one step), which would
   // hide what this test looks for, state that does not travel with an atom.
-  expect_same_on_one_rank({"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
-                           "read_data parallel.data", "pair_style sph/soil",
-                           "pair_coeff 1 1 soil 2650 0.7e6 0.3 0 0 1e12",
-                           "fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin",
-                           "fix refine all sph/soil/refine 20 threshold 1e-12",
+  expect_same_on_one_rank(elastic_patch({"fix refine all sph/soil/refine 20 threshold 1e-12",
                            "fix balance all balance 100 1.0 shift xy 10 1.0", "thermo 0",
-                           "run 1500 post no"});
+                           "run 1500 post no"}));
 }
 
 // Deep refinement under the 2:1 balance, with merging: a zone fixed in space, which the soil
@@ -177,14 +185,10 @@ TEST_F(Parallel, RefinementWithMigrationAndBalancing)
 TEST_F(Parallel, BalancedDeepRefinementAndMergingWithMigration)
 {
   write_patch(periodic_patch_commands("0.0003"));
-  expect_same_on_one_rank({"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
-                           "read_data parallel.data", "pair_style sph/soil",
-                           "pair_coeff 1 1 soil 2650 0.7e6 0.3 0 0 1e12",
-                           "fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin",
-                           "variable zone atom (x-0.1)^2+(y-0.08)^2<0.015^2",
+  expect_same_on_one_rank(elastic_patch({"variable zone atom (x-0.1)^2+(y-0.08)^2<0.015^2",
                            "fix refine all sph/soil/refine 10 criterion v_zone maxlevel 3 merge 5e-4",
                            "fix balance all balance 50 1.0 shift xy 10 1.0", "thermo 0",
-                           "run 300 post no"});
+                           "run 300 post no"}));
   auto refine = lmp->modify->fix[lmp->modify->find_fix("refine")];
   EXPECT_GT(refine->compute_vector(5), 0.0);    // level 3 reached
   EXPECT_GT(refine->compute_vector(7), 0.0);    // families merged
@@ -205,16 +209,12 @@ TEST_F(Parallel, BalancedDeepRefinementAndMergingWithMigration)
 TEST_F(Parallel, OrphansMergeInClustersAcrossRanks)
 {
   write_patch(periodic_patch_commands("0.0003"));
-  expect_same_on_one_rank({"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
-                           "read_data parallel.data", "pair_style sph/soil",
-                           "pair_coeff 1 1 soil 2650 0.7e6 0.3 0 0 1e12",
-                           "fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin",
-                           "variable on equal step<20",
+  expect_same_on_one_rank(elastic_patch({"variable on equal step<20",
                            "variable zone atom ((x-0.1)^2+(y-0.08)^2<0.05^2)*v_on",
                            "fix refine all sph/soil/refine 10 criterion v_zone maxlevel 1 merge 1e-3",
                            "fix balance all balance 50 1.0 shift xy 10 1.0", "thermo 0", "run 20 post no",
                            "variable first atom id>320&&(id-321)%3==0", "group first variable first",
-                           "delete_atoms group first compress no", "run 300 post no"});
+                           "delete_atoms group first compress no", "run 300 post no"}));
   auto refine = lmp->modify->fix[lmp->modify->find_fix("refine")];
   EXPECT_GT(refine->compute_vector(6), 10.0);    // clusters merged
   EXPECT_EQ(refine->compute_vector(5), refine->compute_vector(6));

@@ -85,7 +85,7 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
   }
 
   // global output: split this step, total split, particles of the group per level
-  // 0..maxlevel, pairs more than one level apart at the last check, families merged
+  // 0..maxlevel, pairs more than one level apart at the last check, merges, of them clusters
   vector_flag = 1;
   size_vector = 2 + maxlevel + 1 + 3;
   global_freq = 1;

@@ -10,10 +10,10 @@
    particle is one level coarser: the 2:1 balance holds). The owner of
    daughter 0 (which kept the parent's ID) decides, from its own and the
    ghosts' values, and writes the merged particle into daughter 0's slot; the
-   others' owners delete them (a reverse communication of flags). Particles
-   quiet for twice the hold time whose family has not merged become orphans and
-   merge in clusters by proximity (soil_refine_clusters.h), each cluster's
-   leader deciding as daughter 0 does.
+   others' owners delete them (a reverse communication of flags). A quiet
+   member that does not find all its siblings within the parent's smoothing
+   length becomes an orphan; orphans merge in clusters by proximity
+   (soil_refine_clusters.h), each cluster's leader deciding as daughter 0 does.
 ------------------------------------------------------------------------- */
 
 #include "sph_soil_refine_merger.h"
@@ -49,6 +49,16 @@ namespace {
 // density (a ghost's own is a step old here: fix sph/soil steps it after the ghosts' update),
 // force, velocity, the averaged values
 enum { READY = 0, FAMILY = 1, LEVEL = 2, LEADER = 3, JOINED = 4, DENSITY = 5, FORCE = 6, VELOCITY = 9, VALUES = 12 };
+static_assert(VALUES + SPHSoilRefineMerger::MERGE_VALUES == SPHSoilRefineMerger::MERGE_ROW,
+              "the merge row: its columns and the averaged values");
+
+// squared distance of two points in `dimension` dimensions
+double distance2(const double *a, const double *b, int dimension)
+{
+  double r2 = 0.0;
+  for (int k = 0; k < dimension; k++) r2 += (a[k] - b[k]) * (a[k] - b[k]);
+  return r2;
+}
 }    // namespace
 
 SPHSoilRefineMerger::~SPHSoilRefineMerger()
@@ -169,9 +179,7 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
       balance.for_each_neighbour(i, [&](int j) {
         const double *row = merge_buffer[j];
         if ((int) row[LEVEL] != level || row[FAMILY] != own_family || atom->tag[j] == atom->tag[i]) return;
-        double r2 = 0.0;
-        for (int a = 0; a < domain->dimension; a++) r2 += (x[j][a] - x[i][a]) * (x[j][a] - x[i][a]);
-        if (r2 <= parent_h * parent_h) siblings[atom->tag[j]] = true;
+        if (distance2(x[j], x[i], domain->dimension) <= parent_h * parent_h) siblings[atom->tag[j]] = true;
       });
       // (the rows keep the families of before until all have decided: the same on any ranks)
       if ((int) siblings.size() < count - 1) {
@@ -215,8 +223,7 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
       if ((int) row[LEVEL] != level || atom->tag[j] == atom->tag[i]) return;
       if (orphan[i] ? row[JOINED] != tag : row[FAMILY] != own[FAMILY]) return;
       if (row[READY] == 0.0) complete = false;
-      double r2 = 0.0;
-      for (int a = 0; a < domain->dimension; a++) r2 += (x[j][a] - x[i][a]) * (x[j][a] - x[i][a]);
+      const double r2 = distance2(x[j], x[i], domain->dimension);
       const auto seen = found.find(atom->tag[j]);
       if (seen == found.end() || r2 < seen->second.second) found[atom->tag[j]] = {j, r2};
     });
@@ -282,8 +289,7 @@ void SPHSoilRefineMerger::find_clusters(Fix *fix, const std::vector<char> &orpha
       const double *row = merge_buffer[j];
       if (row[READY] == 0.0 || row[FAMILY] != ORPHAN || (int) row[LEVEL] != avec->level[i]) return;
       if (atom->tag[j] == atom->tag[i] || (column >= 0 && row[column] == 0.0)) return;
-      double r2 = 0.0;
-      for (int a = 0; a < domain->dimension; a++) r2 += (x[j][a] - x[i][a]) * (x[j][a] - x[i][a]);
+      const double r2 = distance2(x[j], x[i], domain->dimension);
       if (r2 <= reach * reach) within.push_back({(double) atom->tag[j], r2, j});
     });
     return within;
@@ -318,9 +324,7 @@ bool SPHSoilRefineMerger::merge_into(int i, const std::vector<int> &members, dou
   sum.position(centre);
   const double parent_h = avec->smoothing_length[i] / splitter.smoothing_ratio;
   auto within = [&](int k) {
-    double r2 = 0.0;
-    for (int a = 0; a < domain->dimension; a++) r2 += (x[k][a] - centre[a]) * (x[k][a] - centre[a]);
-    return r2 <= parent_h * parent_h;
+    return distance2(x[k], centre, domain->dimension) <= parent_h * parent_h;
   };
   if (!within(i)) return false;
   for (int j : members)

@@ -8,11 +8,11 @@
    their parent's smoothing length of their centre of mass, and no particle
    finer than they are lies within the merged particle's reach (the 2:1 balance
    holds). The owner of daughter 0 decides and writes the merged particle into
-   daughter 0's slot; the others' owners delete them. A family that has not
-   merged after twice the hold time (torn apart by the flow, or short of a
-   sibling) breaks up: its members become orphans, which merge in clusters of
-   as many by proximity (soil_refine_clusters.h), the cluster's leader
-   deciding as daughter 0 does.
+   daughter 0's slot; the others' owners delete them. A quiet member that does
+   not find all its siblings within the parent's smoothing length (the flow
+   tore the family apart, or a sibling is gone) becomes an orphan; orphans
+   merge in clusters of as many by proximity (soil_refine_clusters.h), the
+   cluster's leader deciding as daughter 0 does.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SPH_SOIL_REFINE_MERGER_H
