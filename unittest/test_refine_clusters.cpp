@@ -35,7 +35,7 @@ std::vector<Orphan> lattice(int n)
 // one look of the merger on one rank: the three rounds over the orphans still there; the
 // clusters found (the leader first)
 std::vector<std::vector<int>> look(const std::vector<Orphan> &o, const std::vector<char> &there, double reach,
-                                   int count)
+                                   int count, uint64_t salt = 0)
 {
   const int n = (int) o.size();
   auto near = [&](int i, const std::vector<char> *only) {
@@ -48,7 +48,7 @@ std::vector<std::vector<int>> look(const std::vector<Orphan> &o, const std::vect
     return within;
   };
   std::vector<char> leader(n, 0);
-  for (int i = 0; i < n; i++) leader[i] = there[i] && leads_cluster(o[i].tag, near(i, nullptr));
+  for (int i = 0; i < n; i++) leader[i] = there[i] && leads_cluster(o[i].tag, near(i, nullptr), salt);
   std::vector<double> joined(n, 0.0);
   for (int i = 0; i < n; i++)
     if (there[i] && !leader[i]) joined[i] = joined_leader(near(i, &leader));
@@ -116,4 +116,36 @@ TEST(RefineClusters, Ties)
   EXPECT_EQ(m[1].tag, 8.0);
   EXPECT_EQ(m[2].tag, 2.0);
   EXPECT_TRUE(cluster_members({{5.0, 3.0, 0}, {6.0, 1.0, 1}}, 3).empty());
+}
+
+// Orphans with gaps (eight in ten of a 24 x 24 lattice's): with one priority for all looks, a
+// leader that lacks members leads at every look while the orphans near it stay the same, and
+// they wait for ever; with the look in the priority the leaders change. Measured over 16
+// looks: 52 of 460 orphans left with fixed priorities, 24 with salted ones.
+TEST(RefineClusters, LeadersChangeFromLookToLook)
+{
+  std::vector<Orphan> o;
+  for (const auto &orphan : lattice(24))
+    if (((int) orphan.tag * 7919) % 10 < 8) o.push_back(orphan);
+  const double reach = 2.4;
+  auto left_after = [&](int looks, bool salted) {
+    std::vector<char> there(o.size(), 1);
+    for (int k = 0; k < looks; k++)
+      for (const auto &c : look(o, there, reach, 4, salted ? (uint64_t) k : 0))
+        for (int i : c) there[i] = 0;
+    return (int) std::count(there.begin(), there.end(), 1);
+  };
+  const int fixed = left_after(16, false), salted = left_after(16, true);
+  EXPECT_LE(2 * salted, fixed) << salted << " orphans left with salted priorities, " << fixed << " with fixed ones";
+  EXPECT_LE(salted, (int) (0.06 * o.size()));
+  // a leader among three orphans within reach of each other: each leads at some look
+  std::set<double> leaders;
+  for (uint64_t k = 0; k < 32; k++)
+    for (double tag : {3.0, 17.0, 40.0}) {
+      std::vector<NearOrphan> others;
+      for (double other : {3.0, 17.0, 40.0})
+        if (other != tag) others.push_back({other, 1.0, 0});
+      if (leads_cluster(tag, others, k)) leaders.insert(tag);
+    }
+  EXPECT_EQ(leaders.size(), 3u);
 }

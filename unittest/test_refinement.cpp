@@ -472,6 +472,29 @@ TEST_F(Refinement, MergedParticlesAreJudgedFromTheMerge)
   EXPECT_EQ(fix_vector("refine", 5), 36.0);    // every family merged once
 }
 
+// With merging, a particle that has been quiet for the hold time (one that may merge) does not
+// split, whatever its strain since its birth: the hysteresis between splitting and merging
+// holds both ways (no split, merge, split cycle in a deposit at rest). Without merging it splits.
+TEST_F(Refinement, QuietParticlesDoNotSplitWhileMerging)
+{
+  auto splits_at_rest = [&](const std::string &merging) {
+    HIDE_OUTPUT([&] { command("clear"); });
+    patch(2, 6, false);
+    HIDE_OUTPUT([&] {
+      command("velocity all set 0 0 0 units box");
+      command("sph_soil/set all stress 0 0 0 0 0 0");
+      command("fix integrate all sph/soil cfl 0.1");
+      command("fix refine all sph/soil/refine 1 maxlevel 1 " + merging);
+      command("run 20 post no");                              // quiet for more than 1e-5 s
+      command("sph_soil/set all strain 0.3 0 0 0 0 0");       // above the threshold
+      command("run 2 post no");
+    });
+    return fix_vector("refine", 1);
+  };
+  EXPECT_EQ(splits_at_rest("merge 1e-5"), 0.0);
+  EXPECT_EQ(splits_at_rest(""), 36.0);
+}
+
 // Merge: a zone that wants particles down to level 3 for a while and then none; with 'merge',
 // the families merge back once quiet for the hold time, one level at a time: mass and linear
 // momentum are conserved to round-off, the stress stays admissible, the levels stay balanced,
@@ -521,7 +544,7 @@ TEST_F(Refinement, SiblingsMergeBackConservingMassAndMomentum)
 }
 
 // Orphans: families short of a sibling (one daughter of each deleted) never merge as families;
-// after twice the hold time their members merge in clusters of four by proximity, conserving
+// their members merge in clusters of four by proximity, conserving
 // mass and linear momentum to round-off, the stress admissible and the levels balanced, and
 // few are left over.
 TEST_F(Refinement, OrphansMergeInClusters)

@@ -31,6 +31,7 @@
 #include "update.h"
 #include "utils.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -256,7 +257,20 @@ void FixSPHSoilRefine::end_of_step()
   last_split = 0;
   std::vector<char> may_split;
   std::vector<int> parents = selection->parents(groupbit, maxlevel, history(), &may_split);
-  if (merge_time > 0.0) mark_quiet();
+  if (merge_time > 0.0) {
+    mark_quiet();
+    // with merging, a particle that has been quiet for the hold time (one that may merge) does
+    // not split: the band between the split's and the merge's conditions (the hysteresis in
+    // value) holds in both directions. Without it, a quiet particle whose strain since its
+    // birth creeps past the threshold (a deposit at rest settles about each merge near it)
+    // splits, merges back after the hold time, and splits again.
+    const double now = SPHSoilFixes::elapsed_time(update), tolerance = 1.0 - 1.0e-12;
+    parents.erase(std::remove_if(parents.begin(), parents.end(),
+                                 [&](int i) {
+                                   return quiet_since[i] >= 0.0 && now - quiet_since[i] >= merge_time * tolerance;
+                                 }),
+                  parents.end());
+  }
 
   // the 2:1 balance: needed once a particle is refined and a level 2 can exist (at maxlevel 1,
   // or in a group of levels 0 and 1 only, every pair is balanced and the check costs nothing)

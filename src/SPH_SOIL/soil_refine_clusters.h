@@ -17,7 +17,9 @@
       smaller ID at a tie), or none;
    3. a leader with at least count - 1 members takes the count - 1 nearest (the
       smaller ID at a tie) and merges with them; the others wait for a later
-      look, where the leaders have changed.
+      look, where the leaders have changed: the priority is salted with the
+      look (with fixed priorities an orphan that leads a cluster too small to
+      merge would lead it at every look, and its members would wait for ever).
    Every orphan joins at most one leader and leaders join none, so no particle
    goes into two merges.
 ------------------------------------------------------------------------- */
@@ -39,22 +41,23 @@ struct NearOrphan {
   int index;
 };
 
-// the priority of a leader: a bijection of the 64-bit integers (splitmix64's finalizer), so
-// that distinct IDs never tie
-inline uint64_t cluster_priority(double tag)
+// the priority of a leader at a look (a count of the looks, the same on every rank): a
+// bijection of the 64-bit integers for each look (the ID salted with the look, then
+// splitmix64's finalizer), so that distinct IDs never tie
+inline uint64_t cluster_priority(double tag, uint64_t look = 0)
 {
-  uint64_t z = (uint64_t) tag + 0x9e3779b97f4a7c15ULL;
+  uint64_t z = ((uint64_t) tag ^ (look * 0xd1b54a32d192ed03ULL)) + 0x9e3779b97f4a7c15ULL;
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
   return z ^ (z >> 31);
 }
 
-// round 1: `tag` leads if no orphan within reach has a smaller priority
-inline bool leads_cluster(double tag, const std::vector<NearOrphan> &within_reach)
+// round 1: `tag` leads if no orphan within reach has a smaller priority at this look
+inline bool leads_cluster(double tag, const std::vector<NearOrphan> &within_reach, uint64_t look = 0)
 {
-  const uint64_t own = cluster_priority(tag);
+  const uint64_t own = cluster_priority(tag, look);
   for (const auto &o : within_reach)
-    if (cluster_priority(o.tag) < own) return false;
+    if (cluster_priority(o.tag, look) < own) return false;
   return true;
 }
 

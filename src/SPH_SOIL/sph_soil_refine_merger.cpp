@@ -202,7 +202,7 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
   MPI_Allreduce(&changed, &any_changed, 1, MPI_INT, MPI_MAX, world);
   if (any_changed) SPHSoilCompat::forward_comm_fix(comm, fix);
   MPI_Allreduce(&orphans, &any_orphans, 1, MPI_INT, MPI_MAX, world);
-  if (any_orphans) find_clusters(fix, orphan);
+  if (any_orphans) find_clusters(fix, orphan, now);
 
   // the owners of daughter 0 and the clusters' leaders decide and merge
   const int nall = nlocal + atom->nghost;
@@ -276,7 +276,7 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
    joins, each round's values to the ghosts. Reach: the parent's smoothing length.
 ------------------------------------------------------------------------- */
 
-void SPHSoilRefineMerger::find_clusters(Fix *fix, const std::vector<char> &orphan)
+void SPHSoilRefineMerger::find_clusters(Fix *fix, const std::vector<char> &orphan, double now)
 {
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int nlocal = atom->nlocal;
@@ -288,14 +288,17 @@ void SPHSoilRefineMerger::find_clusters(Fix *fix, const std::vector<char> &orpha
     balance.for_each_neighbour(i, [&](int j) {
       const double *row = merge_buffer[j];
       if (row[READY] == 0.0 || row[FAMILY] != ORPHAN || (int) row[LEVEL] != avec->level[i]) return;
-      if (atom->tag[j] == atom->tag[i] || (column >= 0 && row[column] == 0.0)) return;
+      if (atom->tag[j] == atom->tag[i] || atom->type[j] != atom->type[i] || (column >= 0 && row[column] == 0.0))
+        return;
       const double r2 = distance2(x[j], x[i], domain->dimension);
       if (r2 <= reach * reach) within.push_back({(double) atom->tag[j], r2, j});
     });
     return within;
   };
+  // the look (a rule of the time alone, as merge()'s looks are) salts the leaders' priority
+  const uint64_t look = (uint64_t) std::floor(now / (0.25 * merge_time));
   for (int i = 0; i < nlocal; i++)
-    if (orphan[i]) merge_buffer[i][LEADER] = SPHSoil::leads_cluster((double) atom->tag[i], near(i, -1));
+    if (orphan[i]) merge_buffer[i][LEADER] = SPHSoil::leads_cluster((double) atom->tag[i], near(i, -1), look);
   SPHSoilCompat::forward_comm_fix(comm, fix);
   for (int i = 0; i < nlocal; i++)
     if (orphan[i] && merge_buffer[i][LEADER] == 0.0) merge_buffer[i][JOINED] = SPHSoil::joined_leader(near(i, LEADER));

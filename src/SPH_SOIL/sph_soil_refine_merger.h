@@ -62,7 +62,7 @@ class SPHSoilRefineMerger : protected Pointers {
   int merge_rows = 0;
   bigint last_clusters = 0;
   void merge_values(int i, double *values) const;
-  void find_clusters(class Fix *fix, const std::vector<char> &orphan);
+  void find_clusters(class Fix *fix, const std::vector<char> &orphan, double now);
   bool merge_into(int i, const std::vector<int> &members, double now);
 };
 
