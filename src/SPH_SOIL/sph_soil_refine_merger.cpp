@@ -106,6 +106,8 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
   // the time alone: a restarted run looks when the uninterrupted one does)
   const double quarter = 0.25 * merge_time, since_last_check = nevery * update->dt;
   if (std::floor(now / quarter) == std::floor((now - since_last_check) / quarter)) return 0;
+  // the looks' count, which salts the clusters' leaders (soil_refine_clusters.h)
+  const uint64_t look = (uint64_t) std::floor(now / quarter);
 
   // candidates: quiet for the hold time, of a known family or orphans
   // orphan: an orphan that takes part in this look's clusters
@@ -202,7 +204,7 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
   MPI_Allreduce(&changed, &any_changed, 1, MPI_INT, MPI_MAX, world);
   if (any_changed) SPHSoilCompat::forward_comm_fix(comm, fix);
   MPI_Allreduce(&orphans, &any_orphans, 1, MPI_INT, MPI_MAX, world);
-  if (any_orphans) find_clusters(fix, orphan, now);
+  if (any_orphans) find_clusters(fix, orphan, look);
 
   // the owners of daughter 0 and the clusters' leaders decide and merge
   const int nall = nlocal + atom->nghost;
@@ -276,7 +278,7 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
    joins, each round's values to the ghosts. Reach: the parent's smoothing length.
 ------------------------------------------------------------------------- */
 
-void SPHSoilRefineMerger::find_clusters(Fix *fix, const std::vector<char> &orphan, double now)
+void SPHSoilRefineMerger::find_clusters(Fix *fix, const std::vector<char> &orphan, uint64_t look)
 {
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int nlocal = atom->nlocal;
@@ -295,8 +297,6 @@ void SPHSoilRefineMerger::find_clusters(Fix *fix, const std::vector<char> &orpha
     });
     return within;
   };
-  // the look (a rule of the time alone, as merge()'s looks are) salts the leaders' priority
-  const uint64_t look = (uint64_t) std::floor(now / (0.25 * merge_time));
   for (int i = 0; i < nlocal; i++)
     if (orphan[i]) merge_buffer[i][LEADER] = SPHSoil::leads_cluster((double) atom->tag[i], near(i, -1), look);
   SPHSoilCompat::forward_comm_fix(comm, fix);

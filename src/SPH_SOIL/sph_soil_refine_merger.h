@@ -21,6 +21,7 @@
 #include "pointers.h"
 #include "sph_soil_refine_criterion.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -62,7 +63,7 @@ class SPHSoilRefineMerger : protected Pointers {
   int merge_rows = 0;
   bigint last_clusters = 0;
   void merge_values(int i, double *values) const;
-  void find_clusters(class Fix *fix, const std::vector<char> &orphan, double now);
+  void find_clusters(class Fix *fix, const std::vector<char> &orphan, uint64_t look);
   bool merge_into(int i, const std::vector<int> &members, double now);
 };
 
