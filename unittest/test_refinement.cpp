@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <set>
 
 using namespace LAMMPS_NS;
@@ -27,8 +28,9 @@ class Refinement : public SoilTest {
  protected:
 
   // A periodic lattice of spacing 1 cm with mass rho0 d^D (so the derived d_p is 1 cm),
-  // optionally disordered, with velocities and stresses that vary in space.
-  void patch(int dimension, int n, bool disorder, const std::string &atom_style = "sph/soil")
+  // optionally disordered, with velocities and stresses that vary in space; with `types` 2,
+  // half the atoms (at random) are of a second type of the same soil.
+  void patch(int dimension, int n, bool disorder, const std::string &atom_style = "sph/soil", int types = 1)
   {
     HIDE_OUTPUT([&] {
       command(fmt::format("dimension {}", dimension));
@@ -42,8 +44,9 @@ class Refinement : public SoilTest {
         command("lattice sc 0.01 origin 0.5 0.5 0.5");
         command(fmt::format("region box block 0 {} 0 {} 0 {}", n, n, n));
       }
-      command("create_box 1 box");
+      command(fmt::format("create_box {} box", types));
       command("create_atoms 1 box");
+      if (types == 2) command("set group all type/ratio 2 0.5 8123");
       if (disorder) {
         command("variable xnew atom x+0.001*sin(1299*x+7823*y)");
         command("variable ynew atom y+0.001*sin(3711*x-4557*y)");
@@ -59,6 +62,7 @@ class Refinement : public SoilTest {
       command("velocity all set v_vx v_vy NULL units box");
       command("pair_style sph/soil");
       command(SOIL);
+      if (types == 2) command(std::string(SOIL).replace(0, std::strlen("pair_coeff 1 1"), "pair_coeff 2 2"));
       command("neighbor 0.003 bin");
       command("thermo 0");
     });
@@ -579,6 +583,35 @@ TEST_F(Refinement, OrphansMergeInClusters)
   EXPECT_EQ(fix_vector("refine", 3), orphans - 4.0 * fix_vector("refine", 6));
   EXPECT_LE(fix_vector("refine", 3), 0.2 * orphans);
   EXPECT_TRUE(stresses_admissible());
+}
+
+// Orphans of two types (two materials, here of the same soil) never share a cluster: the mass
+// of each type is conserved to round-off while orphans merge.
+TEST_F(Refinement, OrphansOfDifferentTypesDoNotMerge)
+{
+  patch(2, 12, true, "sph/soil", 2);
+  HIDE_OUTPUT([&] {
+    command("fix integrate all sph/soil cfl 0.1");
+    command("variable on equal step<20");
+    command("variable zone atom ((x-0.06)^2+(y-0.06)^2<0.045^2)*v_on");
+    command("fix refine all sph/soil/refine 10 criterion v_zone maxlevel 1 merge 1e-3");
+    command("run 20 post no");
+    command("variable first atom id>144&&(id-145)%3==0");
+    command("group first variable first");
+    command("delete_atoms group first compress no");
+    command("run 1 post no");
+  });
+  auto mass_of_type_2 = [&]() {
+    double local = 0.0, global = 0.0;
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      if (lmp->atom->type[i] == 2) local += lmp->atom->rmass[i];
+    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return global;
+  };
+  const double before = mass_of_type_2();
+  HIDE_OUTPUT([&] { command("run 600 post no"); });
+  EXPECT_GT(fix_vector("refine", 6), 0.0);    // clusters merged
+  EXPECT_NEAR(mass_of_type_2(), before, 1e-14 * before);
 }
 
 TEST_F(Refinement, SameSplitsOnOneAndTwoRanks)

@@ -264,11 +264,9 @@ void FixSPHSoilRefine::end_of_step()
     // value) holds in both directions. Without it, a quiet particle whose strain since its
     // birth creeps past the threshold (a deposit at rest settles about each merge near it)
     // splits, merges back after the hold time, and splits again.
-    const double now = SPHSoilFixes::elapsed_time(update), tolerance = 1.0 - 1.0e-12;
+    const double now = SPHSoilFixes::elapsed_time(update);
     parents.erase(std::remove_if(parents.begin(), parents.end(),
-                                 [&](int i) {
-                                   return quiet_since[i] >= 0.0 && now - quiet_since[i] >= merge_time * tolerance;
-                                 }),
+                                 [&](int i) { return merger->held_quiet(quiet_since[i], now); }),
                   parents.end());
   }
 

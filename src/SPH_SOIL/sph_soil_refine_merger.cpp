@@ -113,12 +113,10 @@ bigint SPHSoilRefineMerger::merge(Fix *fix, const RefineHistory &history, int gr
   // orphan: an orphan that takes part in this look's clusters
   std::vector<char> ready(nlocal, 0), orphan(nlocal, 0);
   int candidates = 0, any = 0;
-  const double tolerance = 1.0 - 1.0e-12;
   for (int i = 0; i < nlocal; i++) {
     const int level = avec->level[i];
     if (!(atom->mask[i] & groupbit) || level < 1 || level > maxlevel) continue;
-    if (family[i][level - 1] == 0.0 || quiet_since[i] < 0.0) continue;
-    if (now - quiet_since[i] < merge_time * tolerance) continue;
+    if (family[i][level - 1] == 0.0 || !held_quiet(quiet_since[i], now)) continue;
     ready[i] = 1;
     candidates++;
   }

@@ -46,6 +46,12 @@ class SPHSoilRefineMerger : protected Pointers {
   // merges on all ranks (families and clusters of orphans); if any, the ghosts are gone (the
   // caller reneighbours). Collective.
   bigint merge(class Fix *fix, const RefineHistory &history, int groupbit, int maxlevel, int nevery);
+  // whether a particle quiet since `quiet_since` (< 0: not quiet) has been quiet for the hold
+  // time at time `now`: it may merge, and the criterion does not split it
+  bool held_quiet(double quiet_since, double now) const
+  {
+    return quiet_since >= 0.0 && now - quiet_since >= merge_time * (1.0 - 1.0e-12);
+  }
 
   int pack_forward_comm(int n, int *list, double *buf);
   void unpack_forward_comm(int n, int first, double *buf);
