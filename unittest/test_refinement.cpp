@@ -68,6 +68,28 @@ class Refinement : public SoilTest {
     });
   }
 
+  // a 12 x 12 patch (of `types` types) whose disc of particles split once at step 10 with
+  // merging on (hold time 1e-3), then lost the first new daughter of every split: families
+  // short of a sibling, whose members become orphans
+  void orphans_patch(int types)
+  {
+    patch(2, 12, true, "sph/soil", types);
+    HIDE_OUTPUT([&] {
+      command("fix integrate all sph/soil cfl 0.1");
+      command("variable on equal step<20");
+      command("variable zone atom ((x-0.06)^2+(y-0.06)^2<0.045^2)*v_on");
+      command("fix refine all sph/soil/refine 10 criterion v_zone maxlevel 1 merge 1e-3");
+      command("run 20 post no");
+      // the first of the three new daughters of every split (each split takes three IDs in a row)
+      command("variable first atom id>144&&(id-145)%3==0");
+      command("group first variable first");
+      command("delete_atoms group first compress no");
+      // (a step first: delete_atoms leaves the forces of the step before, which the first half
+      // kick uses, with other atoms)
+      command("run 1 post no");
+    });
+  }
+
   // mass, momentum (3), kinetic energy, angular momentum about the origin (3)
   std::vector<double> mass_and_momentum()
   {
@@ -553,21 +575,7 @@ TEST_F(Refinement, SiblingsMergeBackConservingMassAndMomentum)
 // few are left over.
 TEST_F(Refinement, OrphansMergeInClusters)
 {
-  patch(2, 12, true);
-  HIDE_OUTPUT([&] {
-    command("fix integrate all sph/soil cfl 0.1");
-    command("variable on equal step<20");
-    command("variable zone atom ((x-0.06)^2+(y-0.06)^2<0.045^2)*v_on");
-    command("fix refine all sph/soil/refine 10 criterion v_zone maxlevel 1 merge 1e-3");
-    command("run 20 post no");
-    // the first of the three new daughters of every split (each split takes three IDs in a row)
-    command("variable first atom id>144&&(id-145)%3==0");
-    command("group first variable first");
-    command("delete_atoms group first compress no");
-    // (a step first: delete_atoms leaves the forces of the step before, which the first half
-    // kick uses, with other atoms)
-    command("run 1 post no");
-  });
+  orphans_patch(1);
   const double families = fix_vector("refine", 1);
   ASSERT_GT(families, 40.0);
   const double orphans = fix_vector("refine", 3);
@@ -589,18 +597,7 @@ TEST_F(Refinement, OrphansMergeInClusters)
 // of each type is conserved to round-off while orphans merge.
 TEST_F(Refinement, OrphansOfDifferentTypesDoNotMerge)
 {
-  patch(2, 12, true, "sph/soil", 2);
-  HIDE_OUTPUT([&] {
-    command("fix integrate all sph/soil cfl 0.1");
-    command("variable on equal step<20");
-    command("variable zone atom ((x-0.06)^2+(y-0.06)^2<0.045^2)*v_on");
-    command("fix refine all sph/soil/refine 10 criterion v_zone maxlevel 1 merge 1e-3");
-    command("run 20 post no");
-    command("variable first atom id>144&&(id-145)%3==0");
-    command("group first variable first");
-    command("delete_atoms group first compress no");
-    command("run 1 post no");
-  });
+  orphans_patch(2);
   auto mass_of_type_2 = [&]() {
     double local = 0.0, global = 0.0;
     for (int i = 0; i < lmp->atom->nlocal; i++)
