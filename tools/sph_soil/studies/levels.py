@@ -26,7 +26,8 @@ Writes doc/refinement_levels.json, doc/refinement_levels.rst (a table per proble
 doc/img/refinement_levels_<problem>.png (surfaces, and particles over time).
 
   python3 -m sph_soil levels collapse                    # maxlevel 1 and 2 of the collapse
-  python3 -m sph_soil levels bars --maxlevels 1 2 3      # (maxlevel 2 of the bars: 1.5 h a run)
+  python3 -m sph_soil levels bars --maxlevels 1 2 3      # (maxlevel 2 of the bars: half an hour a run on
+                                                         # 2 cores; the uniform 0.5 mm reference an hour)
   python3 -m sph_soil levels --references collapse       # also the uniform runs it lacks
   python3 -m sph_soil levels --compare-only
 
