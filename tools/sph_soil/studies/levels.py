@@ -246,7 +246,12 @@ def table(entries, experiment):
     return report.rst_table([c[1] for c in cols], rows)
 
 
-def compare(problems, maxlevels):
+# the maxlevels measured: every one whose runs are there, whichever --maxlevels ran (a run of
+# maxlevel 2 alone must not drop the rows of maxlevel 1 from the page)
+MAXLEVELS = (1, 2, 3)
+
+
+def compare(problems, maxlevels=MAXLEVELS):
     jpath = os.path.join(paths.DOC, 'refinement_levels.json')
     summary = json.load(open(jpath)) if os.path.exists(jpath) else {}
     for problem in problems:
@@ -287,4 +292,4 @@ def main(a):
         raise SystemExit(f'levels: unknown problem(s) {sorted(unknown)}: bars or collapse')
     if not a.compare_only:
         run_missing(runner.from_arguments(a, build=True), a.problems, a.maxlevels, a.np, a.references, a.only)
-    compare(a.problems, a.maxlevels)
+    compare(a.problems)
