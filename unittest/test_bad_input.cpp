@@ -284,7 +284,9 @@ std::vector<BadInput> cases()
   error("FixWithoutAtomStyle", "none", {"region box block 0 1 0 1 0 1", "create_box 1 box"},
         "fix f all sph/soil", "Fix sph/soil requires atom_style sph/soil");
   error("FixUnknownKeyword", "patch", {}, "fix f all sph/soil courant 0.1",
-        "Illegal fix sph/soil keyword courant (allowed: cfl, dtmax)");
+        "Illegal fix sph/soil keyword courant (allowed: cfl, dtmax, stepping)");
+  error("FixSteppingUnknown", "patch", {}, "fix f all sph/soil stepping individual",
+        "Illegal fix sph/soil stepping individual (allowed: global, level)");
   error("FixKeywordWithoutValue", "patch", {}, "fix f all sph/soil cfl",
         "Illegal fix sph/soil command: keyword cfl needs a value");
   error("FixCflTooLarge", "patch", {}, "fix f all sph/soil cfl 2",
@@ -356,6 +358,12 @@ std::vector<BadInput> cases()
         "Fix sph/soil/refine: after splitting at step 1 the timestep 0.0001 exceeds the stability "
         "limit 5.80921e-05 = 0.2 * min(h) / c_p; use 'cfl 0.1' in fix sph/soil (adaptive step) or a "
         "timestep <= 5.80921e-05");
+  error("RefineEveryOffTheLevelsSteps", "patch",
+        {SOIL, "pair_coeff 2 2 wall", "fix integrate all sph/soil cfl 0.1 stepping level",
+         "fix refine all sph/soil/refine 10 maxlevel 2"},
+        "run 0 post no",
+        "Fix sph/soil/refine N 10: with fix sph/soil stepping level, N must be a multiple of "
+        "2^maxlevel = 4, the steps at which all levels are synchronised");
   error("RefineRegion", "patch", {}, "fix r all sph/soil/refine 10 region nowhere",
         "fix sph/soil/refine region nowhere does not exist");
   error("RefineSince", "patch", {}, "fix r all sph/soil/refine 10 since birth",
@@ -420,7 +428,7 @@ std::vector<BadInput> cases()
         "compute c all sph/soil/atom", "Compute sph/soil/atom requires atom_style sph/soil");
   error("ComputeUnknownValue", "patch", {}, "compute c all sph/soil/atom stress",
         "Illegal compute sph/soil/atom value stress (allowed: sxx syy szz sxy sxz syz pressure sqrtJ2 "
-        "strain yielded density h level neighbours shear_strain shear_strain_rate)");
+        "strain yielded density h level neighbours shear_strain shear_strain_rate step_period)");
 
   // ---- data files (the rank that reads the atom raises the error)
   data("DataMassNegative", "1 1 -1.0 0.1 1000 0 0.5 0.5 0", "",

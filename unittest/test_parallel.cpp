@@ -203,6 +203,26 @@ TEST_F(Parallel, BalancedDeepRefinementAndMergingWithMigration)
   EXPECT_LT(largest, 0.1);
 }
 
+// A time step per level (fix sph/soil stepping level) with refinement down to level 2 and
+// merging, under a balance weighted by each particle's share of the pair evaluations: the
+// periods of ghosts, the skipped and weighted pairs and each particle's own step (which
+// migrates with it, mid-step too) give the same state on 1, 2 and 4 ranks.
+TEST_F(Parallel, PerLevelSteppingWithRefinementMergingAndWeightedBalance)
+{
+  write_patch(periodic_patch_commands("0.0003"));
+  auto run = elastic_patch({"variable zone atom (x-0.1)^2+(y-0.08)^2<0.015^2",
+                            "fix refine all sph/soil/refine 8 criterion v_zone maxlevel 2 merge 5e-4",
+                            "compute period all sph/soil/atom step_period",
+                            "variable cost atom 1.0/(c_period+(c_period==0))",
+                            "fix balance all balance 50 1.0 shift xy 10 1.0 weight var cost",
+                            "thermo 0", "run 301 post no"});
+  for (auto &line : run)
+    if (line == "fix integrate all sph/soil cfl 0.1") line += " stepping level";
+  expect_same_on_one_rank(run);
+  EXPECT_EQ(lmp->modify->fix[lmp->modify->find_fix("integrate")]->compute_vector(3), 4.0);
+  EXPECT_GT(lmp->modify->fix[lmp->modify->find_fix("refine")]->compute_vector(6), 0.0);    // merged
+}
+
 // Orphans across ranks: families short of a sibling (one daughter of each deleted) merge in
 // clusters by proximity, leaders and members on different ranks, while the soil drifts
 // through the domains; the same clusters, levels and state on 1, 2 and 4 ranks.

@@ -11,6 +11,7 @@
 #include "memory.h"
 #include "pair_sph_soil.h"
 #include "soil_constitutive.h"
+#include "sph_soil_fixes.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -56,6 +57,14 @@ const std::vector<ComputeSPHSoilAtom::Value> &ComputeSPHSoilAtom::values()
        [](const Source &s, int i) { return SPHSoil::shear_strain(s.avec->total_strain[i]); }},
       {{"shear_strain_rate"}, nullptr,
        [](const Source &s, int i) { return SPHSoil::shear_strain(s.avec->strain_rate[i]); }},
+      // the particle's own time step in LAMMPS steps (fix sph/soil stepping level; 1 with one
+      // global step); 0 for wall particles, which have none
+      {{"step_period"}, MATERIALS,
+       [](const Source &s, int i) {
+         if (s.pair->is_wall_type(s.atom->type[i])) return 0.0;
+         if (!s.schedule || !s.schedule->per_level) return 1.0;
+         return (double) SPHSoil::step_period(s.avec->smoothing_length[i], s.schedule->finest_h);
+       }},
   };
   return table;
 }
@@ -70,7 +79,8 @@ std::string ComputeSPHSoilAtom::value_names()
 /* ---------------------------------------------------------------------- */
 
 ComputeSPHSoilAtom::ComputeSPHSoilAtom(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), nmax(0), vector(nullptr), array(nullptr), pair(nullptr)
+    Compute(lmp, narg, arg), nmax(0), vector(nullptr), array(nullptr), pair(nullptr),
+    schedule(nullptr)
 {
   if (!atom->style_match("sph/soil"))
     error->all(FLERR, "Compute sph/soil/atom requires atom_style sph/soil");
@@ -106,6 +116,7 @@ ComputeSPHSoilAtom::~ComputeSPHSoilAtom()
 void ComputeSPHSoilAtom::init()
 {
   pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));
+  schedule = SPHSoilFixes::step_schedule(lmp);
   for (const Value *v : chosen)
     if (v->needs_pair && !pair)
       error->all(FLERR, "Compute sph/soil/atom {} needs pair_style sph/soil ({})", v->names[0],
@@ -129,7 +140,8 @@ void ComputeSPHSoilAtom::compute_peratom()
       array_atom = array;
     }
   }
-  const Source source{dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil")), atom, pair};
+  const Source source{dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil")), atom, pair,
+                      schedule};
   const int nlocal = atom->nlocal;
   const int *mask = atom->mask;
   const int n = chosen.size();

@@ -19,6 +19,7 @@ ComputeStyle(sph/soil/atom,ComputeSPHSoilAtom);
 #define LMP_COMPUTE_SPH_SOIL_ATOM_H
 
 #include "compute.h"
+#include "soil_level_steps.h"
 
 #include <string>
 #include <vector>
@@ -38,6 +39,7 @@ class ComputeSPHSoilAtom : public Compute {
     class AtomVecSPHSoil *avec;
     class Atom *atom;
     class PairSPHSoil *pair;    // nullptr without pair_style sph/soil
+    const SPHSoil::StepSchedule *schedule;    // fix sph/soil's, nullptr without one
   };
   // one value of the table: its names (the first, then aliases that users of other codes
   // would type), whether it needs the pair style (its materials or its list) and the value of
@@ -57,6 +59,7 @@ class ComputeSPHSoilAtom : public Compute {
   double *vector;    // one value
   double **array;    // several values
   class PairSPHSoil *pair;
+  const SPHSoil::StepSchedule *schedule;
 };
 
 }    // namespace LAMMPS_NS

@@ -39,12 +39,12 @@ constexpr double BIG = 1.0e30;
 
 FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), cfl(0.0), stable_cfl(0.2), max_dt(0.0), avec(nullptr), pair(nullptr),
-    yielded_count(0), integrator_state(nullptr), restore_pending(false)
+    yielded_count(0), nstate(NSTATE_GLOBAL), integrator_state(nullptr), restore_pending(false)
 {
   time_integrate = 1;
   restart_global = 1;
   vector_flag = 1;
-  size_vector = 3;
+  size_vector = 4;
   global_freq = 1;
   extvector = 0;
 
@@ -57,10 +57,18 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
     } else if (strcmp(arg[iarg], "dtmax") == 0) {
       max_dt = SPHSoilInput::number(FLERR, lmp, "fix sph/soil dtmax", arg[iarg + 1],
                                     SPHSoilInput::above(0.0));
+    } else if (strcmp(arg[iarg], "stepping") == 0) {
+      if (strcmp(arg[iarg + 1], "level") == 0)
+        schedule.per_level = true;
+      else if (strcmp(arg[iarg + 1], "global") == 0)
+        schedule.per_level = false;
+      else
+        error->all(FLERR, "Illegal fix sph/soil stepping {} (allowed: global, level)", arg[iarg + 1]);
     } else {
-      error->all(FLERR, "Illegal fix sph/soil keyword {} (allowed: cfl, dtmax)", arg[iarg]);
+      error->all(FLERR, "Illegal fix sph/soil keyword {} (allowed: cfl, dtmax, stepping)", arg[iarg]);
     }
   }
+  if (schedule.per_level) nstate = NSTATE_LEVELS;
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   if (!avec) error->all(FLERR, "Fix sph/soil requires atom_style sph/soil");
   if (max_dt > 0.0 && cfl == 0.0)
@@ -73,8 +81,16 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
                           "geostatic column); expect the run to go unstable, 0.1 to 0.2 is usual",
                    cfl, stable_cfl);
 
+  // (atoms created later get their rows from set_arrays())
+  create_attribute = 1;
   grow_arrays(atom->nmax);
+  for (int i = 0; i < atom->nmax; i++) set_arrays(i);
   atom->add_callback(Atom::GROW);
+  // each particle's own step, in restart files: a run continues exactly at any step
+  if (schedule.per_level) {
+    restart_peratom = 1;
+    atom->add_callback(Atom::RESTART);
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -82,6 +98,7 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
 FixSPHSoil::~FixSPHSoil()
 {
   atom->delete_callback(id, Atom::GROW);
+  if (restart_peratom) atom->delete_callback(id, Atom::RESTART);
   memory->destroy(integrator_state);
 }
 
@@ -139,6 +156,9 @@ void FixSPHSoil::init()
     if (integrated(i))
       for (int k = 0; k < 3; k++) atom->vest[i][k] = atom->v[i][k];
 
+  double min_h, max_h;
+  smoothing_length_range(min_h, max_h);
+  update_schedule(min_h, max_h);
   if (cfl > 0.0) {
     const double dt = stable_timestep();
     if (dt != update->dt) {
@@ -202,7 +222,7 @@ void FixSPHSoil::setup(int /*vflag*/)
 void FixSPHSoil::initial_integrate(int /*vflag*/)
 {
   double **x = atom->x, **v = atom->v, **f = atom->f, **vest = atom->vest;
-  double *rho = atom->rho, *drho = atom->drho, *rmass = atom->rmass;
+  double *rmass = atom->rmass;
   const int nlocal = atom->nlocal;
 
   if (restore_pending) {
@@ -210,6 +230,7 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
       if (integrated(i) && avec->saved_rates[i][AtomVecSPHSoil::SAVED_FLAG] != 0.0) restore_rates(i);
     restore_pending = false;
   }
+  if (schedule.per_level) return initial_integrate_levels();
 
   int first_unstable = -1, first_outside = -1;
   double lo[3], hi[3];
@@ -223,20 +244,7 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
       v[i][a] += dtfm * f[i][a];
       x[i][a] += dtv * v[i][a];
     }
-    // Heun predictor for density, strain and stress: a full step with the old rates,
-    // so that the force evaluation sees the state at t + dt (a half step would make the
-    // scheme first order); the old rates are kept for the corrector. The density steps in
-    // its logarithm (doc/theory.rst 4.1): positive whatever the rate
-    double *old = integrator_state[i];
-    old[HEUN_LOG_DRHO] = drho[i] / rho[i];
-    rho[i] = std::max(rho[i] * SPHSoil::density_growth(dtv * old[HEUN_LOG_DRHO]),
-                      density_floor_of_type[atom->type[i]]);
-    for (int k = 0; k < 6; k++) {
-      old[HEUN_STRAIN_RATE + k] = avec->strain_rate[i][k];
-      avec->total_strain[i][k] += dtv * avec->strain_rate[i][k];
-      avec->stress[i][k] += dtv * avec->stress_rate[i][k];
-    }
-    model_of_type[atom->type[i]]->return_to_admissible(avec->stress[i]);
+    predict(i, dtv);
     // the positions only (a non-finite velocity makes them non-finite): what LAMMPS checks
     // before the next neighbour list; the whole state is checked after the corrector. The
     // comparisons are false for a NaN too.
@@ -294,8 +302,9 @@ void FixSPHSoil::stop_if_left_box(int first_outside)
 
 void FixSPHSoil::final_integrate()
 {
+  if (schedule.per_level) return final_integrate_levels();
   double **v = atom->v, **f = atom->f;
-  double *rho = atom->rho, *drho = atom->drho, *rmass = atom->rmass;
+  const double *rmass = atom->rmass;
   const int nlocal = atom->nlocal;
   bigint yielded = 0;
   int first_unstable = -1;
@@ -304,22 +313,170 @@ void FixSPHSoil::final_integrate()
     if (!integrated(i)) continue;
     const double dtfm = dtf / rmass[i];
     for (int a = 0; a < 3; a++) v[i][a] += dtfm * f[i][a];
-    const double *old = integrator_state[i];
-    rho[i] = std::max(rho[i] * SPHSoil::density_growth(dtf * (drho[i] / rho[i] - old[HEUN_LOG_DRHO])),
-                      density_floor_of_type[atom->type[i]]);
-    for (int k = 0; k < 6; k++)
-      avec->total_strain[i][k] += dtf * (avec->strain_rate[i][k] - old[HEUN_STRAIN_RATE + k]);
+    if (correct(i, dtf)) yielded++;
+    if (unstable(i) && lower_id(i, first_unstable)) first_unstable = i;
+  }
+  yielded_count = yielded;
+  stop_if_unstable(first_unstable);
+}
 
-    const auto model = model_of_type[atom->type[i]];
-    double *stress = avec->stress[i];
-    double *stress_rate = avec->stress_rate[i];
-    double new_rate[6];
-    model->stress_rate(stress, avec->strain_rate[i], avec->spin[i], new_rate);
-    for (int k = 0; k < 6; k++) {
-      stress[k] += dtf * (new_rate[k] - stress_rate[k]);
-      stress_rate[k] = new_rate[k];
+/* ----------------------------------------------------------------------
+   Heun predictor for density, strain and stress: a full step with the old rates, so that the
+   force evaluation sees the state at the step's end (a half step would make the scheme first
+   order); the old rates are kept for the corrector. The density steps in its logarithm
+   (doc/theory.rst 4.1): positive whatever the rate
+------------------------------------------------------------------------- */
+
+void FixSPHSoil::predict(int i, double step)
+{
+  double *rho = atom->rho;
+  double *old = integrator_state[i];
+  old[HEUN_LOG_DRHO] = atom->drho[i] / rho[i];
+  rho[i] = std::max(rho[i] * SPHSoil::density_growth(step * old[HEUN_LOG_DRHO]),
+                    density_floor_of_type[atom->type[i]]);
+  for (int k = 0; k < 6; k++) {
+    old[HEUN_STRAIN_RATE + k] = avec->strain_rate[i][k];
+    avec->total_strain[i][k] += step * avec->strain_rate[i][k];
+    avec->stress[i][k] += step * avec->stress_rate[i][k];
+  }
+  model_of_type[atom->type[i]]->return_to_admissible(avec->stress[i]);
+}
+
+// Heun corrector: y(t + dt) = y(t) + dt/2 (rate(t) + rate(t + dt)), the predictor having made
+// the full step with rate(t)
+bool FixSPHSoil::correct(int i, double half_step)
+{
+  double *rho = atom->rho;
+  const double *old = integrator_state[i];
+  rho[i] = std::max(rho[i] * SPHSoil::density_growth(half_step * (atom->drho[i] / rho[i] - old[HEUN_LOG_DRHO])),
+                    density_floor_of_type[atom->type[i]]);
+  for (int k = 0; k < 6; k++)
+    avec->total_strain[i][k] += half_step * (avec->strain_rate[i][k] - old[HEUN_STRAIN_RATE + k]);
+
+  const auto model = model_of_type[atom->type[i]];
+  double *stress = avec->stress[i];
+  double *stress_rate = avec->stress_rate[i];
+  double new_rate[6];
+  model->stress_rate(stress, avec->strain_rate[i], avec->spin[i], new_rate);
+  for (int k = 0; k < 6; k++) {
+    stress[k] += half_step * (new_rate[k] - stress_rate[k]);
+    stress_rate[k] = new_rate[k];
+  }
+  return model->return_to_admissible(stress);
+}
+
+/* ----------------------------------------------------------------------
+   a time step per level (soil_level_steps.h, doc/theory.rst 5.12). This LAMMPS step is a
+   sub-step of dt that ends at step `now`. Every particle gets the kicks of the forces of the last
+   evaluation (weighted by the pair style: impulses of each pair's own period, and the body
+   forces of every step) and drifts; a particle whose own step begins now predicts its state
+   for the step's end; the others show their partners the state interpolated to `now`.
+------------------------------------------------------------------------- */
+
+void FixSPHSoil::initial_integrate_levels()
+{
+  double **x = atom->x, **v = atom->v, **f = atom->f, **vest = atom->vest;
+  double **stress = avec->stress;
+  double *rho = atom->rho;
+  const double *rmass = atom->rmass, *h = avec->smoothing_length;
+  const int nlocal = atom->nlocal;
+  const int64_t now = update->ntimestep;
+  const double begun = (double) (now - 1), ends = (double) now;
+
+  int first_unstable = -1, first_outside = -1;
+  double lo[3], hi[3];
+  box_limits(lo, hi);
+  for (int i = 0; i < nlocal; i++) {
+    if (!integrated(i)) continue;
+    const double dtfm = dtf / rmass[i];
+    double v_start[3];
+    for (int a = 0; a < 3; a++) {
+      v_start[a] = v[i][a];
+      v[i][a] += dtfm * f[i][a];
+      x[i][a] += dtv * v[i][a];
     }
-    if (model->return_to_admissible(stress)) yielded++;
+    double *s = integrator_state[i];
+    // a new step: after the last one ended, and for a particle without one (new, or steps
+    // renumbered by reset_timestep); one that begins off its period's multiples (a run's start)
+    // is shortened to the next
+    if (begun >= s[STEP_END] || begun < s[STEP_BEGIN]) {
+      const int period = SPHSoil::step_period(h[i], schedule.finest_h);
+      const bool continues = begun == s[STEP_END] && s[STEP_DURATION] > 0.0;
+      s[STEP_BEGIN] = begun;
+      s[STEP_END] = (double) SPHSoil::step_end(now - 1, period);
+      const double length = s[STEP_END] - s[STEP_BEGIN], duration = length * dtv;
+      if (length == 1.0) {
+        // a step of one time step: the global scheme (its estimate of v(t + dt) included)
+        s[STEP_DURATION] = duration;
+        for (int a = 0; a < 3; a++) {
+          s[BEGIN_VELOCITY + a] = v_start[a];
+          vest[i][a] = v_start[a] + 2.0 * dtfm * f[i][a];
+        }
+        predict(i, duration);
+      } else {
+        // the mean acceleration of the step that ended now (the velocity's change over it,
+        // every kick included); a particle without one: its forces of now, spread over its step
+        for (int a = 0; a < 3; a++) {
+          s[MEAN_ACCELERATION + a] = continues
+              ? (v_start[a] - s[BEGIN_VELOCITY + a]) / s[STEP_DURATION]
+              : 2.0 * dtfm * f[i][a] / duration;
+          s[BEGIN_VELOCITY + a] = v_start[a];
+          vest[i][a] = v_start[a] + dtv * s[MEAN_ACCELERATION + a];
+        }
+        s[STEP_DURATION] = duration;
+        const double begin_rho = rho[i];
+        double begin_stress[6];
+        for (int k = 0; k < 6; k++) begin_stress[k] = stress[i][k];
+        predict(i, duration);
+        // partners see the state interpolated between the start and the prediction
+        s[END_RHO] = rho[i];
+        s[RHO_INCREMENT] = (rho[i] - begin_rho) / length;
+        rho[i] = begin_rho + s[RHO_INCREMENT];
+        for (int k = 0; k < 6; k++) {
+          s[END_STRESS + k] = stress[i][k];
+          s[STRESS_INCREMENT + k] = (stress[i][k] - begin_stress[k]) / length;
+          stress[i][k] = begin_stress[k] + s[STRESS_INCREMENT + k];
+        }
+      }
+    } else if (ends == s[STEP_END]) {
+      // the step's last time step: exactly the predictor's state, for the corrector
+      rho[i] = s[END_RHO];
+      for (int k = 0; k < 6; k++) stress[i][k] = s[END_STRESS + k];
+      for (int a = 0; a < 3; a++) vest[i][a] += dtv * s[MEAN_ACCELERATION + a];
+    } else {
+      rho[i] += s[RHO_INCREMENT];
+      for (int k = 0; k < 6; k++) stress[i][k] += s[STRESS_INCREMENT + k];
+      for (int a = 0; a < 3; a++) vest[i][a] += dtv * s[MEAN_ACCELERATION + a];
+    }
+    if (!(x[i][0] >= lo[0] && x[i][0] < hi[0] && x[i][1] >= lo[1] && x[i][1] < hi[1] &&
+          x[i][2] >= lo[2] && x[i][2] < hi[2])) {
+      if (!std::isfinite(x[i][0] + x[i][1] + x[i][2])) {
+        if (lower_id(i, first_unstable)) first_unstable = i;
+      } else if (lower_id(i, first_outside)) {
+        first_outside = i;
+      }
+    }
+  }
+  stop_if_unstable(first_unstable);
+  stop_if_left_box(first_outside);
+}
+
+// the second kick for all; the corrector for the particles whose step ends now
+void FixSPHSoil::final_integrate_levels()
+{
+  double **v = atom->v, **f = atom->f;
+  const double *rmass = atom->rmass;
+  const int nlocal = atom->nlocal;
+  const double now = (double) update->ntimestep;
+  bigint yielded = 0;
+  int first_unstable = -1;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!integrated(i)) continue;
+    const double dtfm = dtf / rmass[i];
+    for (int a = 0; a < 3; a++) v[i][a] += dtfm * f[i][a];
+    const double *s = integrator_state[i];
+    if (now == s[STEP_END] && correct(i, 0.5 * (s[STEP_END] - s[STEP_BEGIN]) * dtv)) yielded++;
     if (unstable(i) && lower_id(i, first_unstable)) first_unstable = i;
   }
   yielded_count = yielded;
@@ -398,14 +555,34 @@ std::string FixSPHSoil::likely_causes(double density, double reference_density)
 
 /* ---------------------------------------------------------------------- */
 
+// the smallest and the largest h of the integrated particles (BIG and -BIG without any)
+void FixSPHSoil::smoothing_length_range(double &min_h, double &max_h)
+{
+  double local[2] = {BIG, BIG}, all[2];    // min h and -max h: one reduction
+  for (int i = 0; i < atom->nlocal; i++)
+    if (integrated(i)) {
+      local[0] = MIN(local[0], avec->smoothing_length[i]);
+      local[1] = MIN(local[1], -avec->smoothing_length[i]);
+    }
+  MPI_Allreduce(local, all, 2, MPI_DOUBLE, MPI_MIN, world);
+  min_h = all[0];
+  max_h = -all[1];
+}
+
+// the finest h steps every LAMMPS step; the hierarchy changes with it only where refinement
+// changes it, at the steps where all levels are synchronised (fix sph/soil/refine)
+void FixSPHSoil::update_schedule(double min_h, double max_h)
+{
+  if (!schedule.per_level) return;
+  schedule.finest_h = min_h < BIG ? min_h : 0.0;
+  schedule.largest_period = min_h < BIG ? SPHSoil::step_period(max_h, min_h) : 1;
+}
+
 double FixSPHSoil::stable_timestep()
 {
-  const int nlocal = atom->nlocal;
-  double local_min_h = BIG;
-  for (int i = 0; i < nlocal; i++)
-    if (integrated(i)) local_min_h = MIN(local_min_h, avec->smoothing_length[i]);
-  double min_h;
-  MPI_Allreduce(&local_min_h, &min_h, 1, MPI_DOUBLE, MPI_MIN, world);
+  double min_h, max_h;
+  smoothing_length_range(min_h, max_h);
+  update_schedule(min_h, max_h);
   const double c = pair->max_wave_speed();
   if (min_h >= BIG || c <= 0.0) return update->dt;
   double dt = (cfl > 0.0 ? cfl : stable_cfl) * min_h / c;
@@ -425,6 +602,11 @@ void FixSPHSoil::end_of_step()
 void FixSPHSoil::particles_refined(const char *who)
 {
   if (cfl > 0.0) return adapt_timestep();
+  if (schedule.per_level) {
+    double min_h, max_h;
+    smoothing_length_range(min_h, max_h);
+    update_schedule(min_h, max_h);
+  }
   const double limit = stable_timestep();
   if (update->dt > limit)
     error->all(FLERR, "{}: after splitting at step {} the timestep {:.6g} exceeds the stability "
@@ -486,24 +668,61 @@ void FixSPHSoil::restore_rates(int i)
 
 void FixSPHSoil::grow_arrays(int nmax)
 {
-  memory->grow(integrator_state, nmax, NSTATE, "sph/soil:integrator_state");
+  memory->grow(integrator_state, nmax, nstate, "sph/soil:integrator_state");
 }
 
 void FixSPHSoil::copy_arrays(int i, int j, int /*delflag*/)
 {
-  for (int k = 0; k < NSTATE; k++) integrator_state[j][k] = integrator_state[i][k];
+  for (int k = 0; k < nstate; k++) integrator_state[j][k] = integrator_state[i][k];
+}
+
+// a new particle has no step of its own yet (it begins one at its first sub-step)
+void FixSPHSoil::set_arrays(int i)
+{
+  for (int k = 0; k < nstate; k++) integrator_state[i][k] = 0.0;
+  if (nstate > STEP_END) integrator_state[i][STEP_BEGIN] = integrator_state[i][STEP_END] = -BIG;
+}
+
+// the row after its length (LAMMPS's layout of per-atom restart data)
+int FixSPHSoil::pack_restart(int i, double *buf)
+{
+  buf[0] = nstate + 1;
+  for (int k = 0; k < nstate; k++) buf[1 + k] = integrator_state[i][k];
+  return nstate + 1;
+}
+
+// a row of another length (a file of another build) leaves the particle without a step of its
+// own: it begins one at its first time step
+void FixSPHSoil::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  const double *buf = &extra[nlocal][m];
+  if (static_cast<int>(buf[0]) != nstate + 1) return set_arrays(nlocal);
+  for (int k = 0; k < nstate; k++) integrator_state[nlocal][k] = buf[1 + k];
+}
+
+int FixSPHSoil::maxsize_restart()
+{
+  return nstate + 1;
+}
+
+int FixSPHSoil::size_restart(int /*nlocal*/)
+{
+  return nstate + 1;
 }
 
 int FixSPHSoil::pack_exchange(int i, double *buf)
 {
-  for (int k = 0; k < NSTATE; k++) buf[k] = integrator_state[i][k];
-  return NSTATE;
+  for (int k = 0; k < nstate; k++) buf[k] = integrator_state[i][k];
+  return nstate;
 }
 
 int FixSPHSoil::unpack_exchange(int nlocal, double *buf)
 {
-  for (int k = 0; k < NSTATE; k++) integrator_state[nlocal][k] = buf[k];
-  return NSTATE;
+  for (int k = 0; k < nstate; k++) integrator_state[nlocal][k] = buf[k];
+  return nstate;
 }
 
 /* ----------------------------------------------------------------------
@@ -550,22 +769,26 @@ constexpr int FixSPHSoil::RESTART_FORMAT;
 
 double FixSPHSoil::memory_usage()
 {
-  return (double) atom->nmax * NSTATE * sizeof(double);
+  return (double) atom->nmax * nstate * sizeof(double);
 }
 
 void *FixSPHSoil::extract(const char *name, int &dim)
 {
   dim = 0;
-  return strcmp(name, SPHSoilFixes::INTEGRATOR) == 0 ? (void *) this : nullptr;
+  if (strcmp(name, SPHSoilFixes::INTEGRATOR) == 0) return (void *) this;
+  if (strcmp(name, SPHSoilFixes::SCHEDULE) == 0) return (void *) &schedule;
+  return nullptr;
 }
 
 /* ----------------------------------------------------------------------
-   1: time step, 2: smallest h, 3: particles returned to the yield surface this step
+   1: time step, 2: smallest h, 3: particles returned to the yield surface this step, 4: the
+   largest period in time steps (1 with one global step)
 ------------------------------------------------------------------------- */
 
 double FixSPHSoil::compute_vector(int n)
 {
   if (n == 0) return update->dt;
+  if (n == 3) return schedule.per_level ? (double) schedule.largest_period : 1.0;
   if (n == 1) {
     double local_min_h = BIG, min_h;
     for (int i = 0; i < atom->nlocal; i++)

@@ -5,8 +5,10 @@
    velocities, a Heun predictor-corrector for density, accumulated strain
    and stress (doc/theory.rst section 4.1), each stress update followed by
    the constitutive model's return to the admissible set. Optional adaptive
-   time step from the CFL condition, for every fix. Wall particles are never
-   integrated (their kinematics are the pair style's: sph_soil_walls.h).
+   time step from the CFL condition, for every fix; optionally a time step
+   per level (stepping level: soil_level_steps.h, doc/theory.rst 5.12). Wall
+   particles are never integrated (their kinematics are the pair style's:
+   sph_soil_walls.h).
    See doc/fix_sph_soil.rst.
 ------------------------------------------------------------------------- */
 
@@ -21,6 +23,7 @@ FixStyle(sph/soil,FixSPHSoil);
 
 #include "atom.h"
 #include "fix.h"
+#include "soil_level_steps.h"
 
 #include <string>
 #include <vector>
@@ -56,6 +59,12 @@ class FixSPHSoil : public Fix {
   // the corrector)
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  // with stepping level, each particle's own step (mid-step too) goes into restart files
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int maxsize_restart() override;
+  int size_restart(int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
   // the elapsed time, with a format number (see write_restart())
@@ -69,6 +78,7 @@ class FixSPHSoil : public Fix {
   double cfl;           // adaptive time step dt = cfl * min h / c_p (0: fixed time step)
   double stable_cfl;    // largest cfl accepted for a user-fixed time step
   double max_dt;        // upper bound of the adaptive step (0: none)
+  SPHSoil::StepSchedule schedule;    // the time step per level (stepping level), or off
   class AtomVecSPHSoil *avec;
   class PairSPHSoil *pair;
   std::vector<const SPHSoil::ConstitutiveModel *> model_of_type;    // owned by the pair style
@@ -79,8 +89,36 @@ class FixSPHSoil : public Fix {
   // style, where the pair style writes them): at the start of each step, the density's
   // logarithmic rate (drho / rho) and the strain rate, for the Heun corrector. (The rates of
   // the last step of a run, which the next run starts from, are the atom style's saved_rates.)
-  enum { HEUN_LOG_DRHO = 0, HEUN_STRAIN_RATE = 1, NSTATE = 7 };
+  // Stepping per level adds the particle's own step: the LAMMPS steps it began and ends at, its
+  // duration (s), the increments of its density and stress per time step (from the start to
+  // the predictor's state at the end) and that end state, its velocity at the start and the
+  // mean acceleration of its last step (the velocity partners see of it between its steps' ends).
+  enum {
+    HEUN_LOG_DRHO = 0,
+    HEUN_STRAIN_RATE = 1,
+    NSTATE_GLOBAL = 7,
+    STEP_BEGIN = 7,
+    STEP_END = 8,
+    STEP_DURATION = 9,
+    RHO_INCREMENT = 10,
+    STRESS_INCREMENT = 11,
+    END_RHO = 17,
+    END_STRESS = 18,
+    BEGIN_VELOCITY = 24,
+    MEAN_ACCELERATION = 27,
+    NSTATE_LEVELS = 30
+  };
+  int nstate;
   double **integrator_state;
+  // the Heun predictor over a step of `step` (a full step with the rates of its start, which
+  // the corrector keeps), and the corrector with half that step; true if the corrected stress
+  // was returned to the yield surface
+  void predict(int i, double step);
+  bool correct(int i, double half_step);
+  void initial_integrate_levels();
+  void final_integrate_levels();
+  // the hierarchy from the smallest and largest h (collective)
+  void update_schedule(double min_h, double max_h);
   bool restore_pending;    // at the first step of a run: restore the saved rates
   void save_rates(int i) const;
   void restore_rates(int i);
@@ -98,6 +136,7 @@ class FixSPHSoil : public Fix {
   void stop_if_left_box(int first_outside);
   std::string likely_causes(double density, double reference_density);
   double stable_timestep();
+  void smoothing_length_range(double &min_h, double &max_h);
   void adapt_timestep();
 };
 

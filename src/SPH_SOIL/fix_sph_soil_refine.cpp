@@ -48,7 +48,7 @@ const char *const STYLE = "Fix sph/soil/refine";
 FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxlevel(1),
     strain_at_birth(nullptr), quiet_since(nullptr), family(nullptr), merge_time(0.0),
-    total_merged(0), integrator(nullptr), parameters_reported(false),
+    total_merged(0), integrator(nullptr), schedule(nullptr), parameters_reported(false),
     bytes_per_particle(0.0), node_bytes(0.0), last_split(0), last_split_step(-1), total_split(0),
     last_unbalanced(0), run_unbalanced(0), run_split(0), run_forced(0)
 {
@@ -129,6 +129,13 @@ void FixSPHSoilRefine::init()
   for (int ifix = 0; ifix < modify->nfix && !integrator; ifix++)
     integrator = dynamic_cast<FixSPHSoil *>(modify->fix[ifix]);
   if (!integrator) error->all(FLERR, "Fix sph/soil/refine requires fix sph/soil");
+  // with a time step per level, splits and merges happen where every level ends a step: the
+  // multiples of the largest period, 2^maxlevel for particles that began at one level
+  schedule = SPHSoilFixes::step_schedule(lmp);
+  if (schedule && schedule->per_level && nevery % (1 << maxlevel) != 0)
+    error->all(FLERR, "Fix sph/soil/refine N {}: with fix sph/soil stepping level, N must be a "
+                      "multiple of 2^maxlevel = {}, the steps at which all levels are synchronised",
+               nevery, 1 << maxlevel);
 
   // wall particles carry the wall geometry; splitting them would break it
   auto pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));
@@ -253,6 +260,9 @@ void FixSPHSoilRefine::report_parameters()
 
 void FixSPHSoilRefine::end_of_step()
 {
+  // (particles that began at different levels may have a longer period: wait for its multiple)
+  if (schedule && schedule->per_level && update->ntimestep % schedule->largest_period != 0) return;
+
   last_split_step = update->ntimestep;
   last_split = 0;
   std::vector<char> may_split;
@@ -522,6 +532,9 @@ void FixSPHSoilRefine::merge()
   if (merged == 0) return;
   reneighbour();
   next_reneighbor = update->ntimestep + 1;
+  // the smallest h may have grown: with a time step per level, the hierarchy follows now, at
+  // the synchronised step (with one global step, the adaptive step follows at the next step)
+  if (schedule && schedule->per_level) integrator->particles_refined(STYLE);
   total_merged += merged;
   run_merged += merged;
   total_clusters += merger->clusters_merged();

@@ -24,6 +24,7 @@ FixStyle(sph/soil/refine,FixSPHSoilRefine);
 #define LMP_FIX_SPH_SOIL_REFINE_H
 
 #include "fix.h"
+#include "soil_level_steps.h"
 #include "sph_soil_refine_criterion.h"
 
 #include <memory>
@@ -73,6 +74,7 @@ class FixSPHSoilRefine : public Fix {
   bigint total_merged;         // merges since the fix was defined (families and clusters)
   bigint total_clusters = 0;   // of them, clusters of orphans
   class FixSPHSoil *integrator;
+  const SPHSoil::StepSchedule *schedule;    // fix sph/soil's time-step hierarchy
   bool parameters_reported;
   double bytes_per_particle, node_bytes;    // at set-up: a split that would not fit stops
 

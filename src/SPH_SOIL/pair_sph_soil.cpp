@@ -16,6 +16,7 @@
 #include "neighbor.h"
 #include "soil_artificial_stress.h"
 #include "soil_packed_rows.h"
+#include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
 #include "sph_soil_walls.h"
@@ -36,7 +37,9 @@ PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
     Pair(lmp), has_artificial_stress(false), materials(lmp),
     walls(new SPHSoilWalls(lmp, this)), sound_speed_ij(nullptr), max_h(0.0), avec(nullptr),
     warned_density(false), warned_spacing(false), warned_coinciding(false), nmax_packed(0),
-    packed(nullptr), sums(nullptr), nmax_artificial(0), artificial(nullptr), skin_fix(nullptr)
+    packed(nullptr), sums(nullptr), schedule(nullptr), nmax_periods(0), step_periods(nullptr), atom_periods(nullptr),
+    periods_finest_h(-1.0),
+    nmax_artificial(0), artificial(nullptr), skin_fix(nullptr)
 {
   set_defaults();
   single_enable = 0;
@@ -57,6 +60,8 @@ PairSPHSoil::~PairSPHSoil()
 {
   memory->destroy(packed);
   memory->destroy(sums);
+  memory->destroy(step_periods);
+  memory->destroy(atom_periods);
   memory->destroy(artificial);
   if (allocated) {
     memory->destroy(setflag);
@@ -209,6 +214,7 @@ void PairSPHSoil::init_style()
   }
 
   walls->init();
+  schedule = SPHSoilFixes::step_schedule(lmp);
   // the fix that keeps our list valid between LAMMPS's reneighbourings (created once, as
   // pair_granular creates its history fix)
   if (modify->find_fix(skin_fix_id) < 0) modify->add_fix(skin_fix_id + " all SPH_SOIL_SKIN");

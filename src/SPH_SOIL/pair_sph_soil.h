@@ -27,6 +27,7 @@ PairStyle(sph/soil,PairSPHSoil);
 
 #include "pair.h"
 #include "soil_kernels.h"
+#include "soil_level_steps.h"
 #include "soil_neighbours.h"
 #include "sph_soil_materials.h"
 
@@ -125,6 +126,16 @@ class PairSPHSoil : public Pair {
   double *packed;
   double *sums;
   template <int DIMENSION> void pack_atoms();
+  // with a time step per level (fix sph/soil's schedule, soil_level_steps.h): per owned and
+  // ghost atom its signed period (+n: it ends a step at this evaluation, -n: not; a wall
+  // particle -infinity, it takes its partner's), from its h
+  const SPHSoil::StepSchedule *schedule;
+  int nmax_periods;
+  double *step_periods;
+  int *atom_periods;           // the periods (0: a wall), kept from one list to the next
+  double periods_finest_h;     // the h_min they were computed with
+  bool per_level() const { return schedule && schedule->per_level; }
+  void pack_step_periods();
   template <int DIMENSION> void unpack_sums();
   // per owned and ghost atom: R (Voigt, the units of stress / rho^2) and 1 / w(d / h), w the
   // kernel's shape and d = (m / rho)^(1/D) the spacing: the pair's weight is
@@ -134,7 +145,7 @@ class PairSPHSoil : public Pair {
   int nmax_artificial;
   double *artificial;
   template <int DIMENSION, class Kernel> void pack_artificial_stress();
-  template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL> void eval();
+  template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL, bool LEVELS> void eval();
   struct PairGeometry {
     double dx[3], r2, r, inv_h, hij, factor;
   };
@@ -142,14 +153,14 @@ class PairSPHSoil : public Pair {
   static bool pair_geometry(const double *xi, double hi, const double *pj, PairGeometry &g);
   template <int DIMENSION, bool VIRIAL>
   void mirror_wall_pair(int soil, int wall, double sign, const double dx[3], double r2, double hij,
-                        double factor, double c_ij);
+                        double factor, double c_ij, double weight);
   // with_kernel() calls it with the kernel type: picks the dimension, whether the loop adds the
-  // artificial stress and whether it tallies the virial pair by pair (each compiled apart, so
-  // that the loop without them stays as lean)
+  // artificial stress, whether it tallies the virial pair by pair and whether it steps per level
+  // (each compiled apart, so that the loop without them stays as lean)
   struct Evaluate {
     PairSPHSoil *pair;
     int dimension;
-    bool artificial_stress, virial;
+    bool artificial_stress, virial, levels;
     template <class Kernel> void operator()() const;
   };
 

@@ -17,6 +17,7 @@
 #include "soil_wall_images.h"
 #include "sph_soil_wall_friction.h"
 #include "sph_soil_walls.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -50,7 +51,11 @@ void PairSPHSoil::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   if (neighbor->ago == 0) build_neighbours();
   if (!warned_coinciding) warn_coinciding();
-  SPHSoil::with_kernel(kernel, Evaluate{this, domain->dimension, has_artificial_stress, vflag_either != 0});
+  const bool levels = per_level();
+  if (levels) pack_step_periods();
+  if (walls->interface()) walls->interface()->set_step_periods(levels ? step_periods : nullptr);
+  SPHSoil::with_kernel(kernel, Evaluate{this, domain->dimension, has_artificial_stress,
+                                        vflag_either != 0, levels});
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
@@ -58,12 +63,53 @@ template <class Kernel> void PairSPHSoil::Evaluate::operator()() const
 {
   // (a table of member-function pointers: one branch instead of a tree of them)
   using Eval = void (PairSPHSoil::*)();
-  static const Eval table[2][2][2] = {
-      {{&PairSPHSoil::eval<2, Kernel, false, false>, &PairSPHSoil::eval<2, Kernel, false, true>},
-       {&PairSPHSoil::eval<2, Kernel, true, false>, &PairSPHSoil::eval<2, Kernel, true, true>}},
-      {{&PairSPHSoil::eval<3, Kernel, false, false>, &PairSPHSoil::eval<3, Kernel, false, true>},
-       {&PairSPHSoil::eval<3, Kernel, true, false>, &PairSPHSoil::eval<3, Kernel, true, true>}}};
-  (pair->*table[dimension == 3][artificial_stress][virial])();
+  using P = PairSPHSoil;
+  static const Eval table[2][2][2][2] = {
+      {{{&P::eval<2, Kernel, false, false, false>, &P::eval<2, Kernel, false, false, true>},
+        {&P::eval<2, Kernel, false, true, false>, &P::eval<2, Kernel, false, true, true>}},
+       {{&P::eval<2, Kernel, true, false, false>, &P::eval<2, Kernel, true, false, true>},
+        {&P::eval<2, Kernel, true, true, false>, &P::eval<2, Kernel, true, true, true>}}},
+      {{{&P::eval<3, Kernel, false, false, false>, &P::eval<3, Kernel, false, false, true>},
+        {&P::eval<3, Kernel, false, true, false>, &P::eval<3, Kernel, false, true, true>}},
+       {{&P::eval<3, Kernel, true, false, false>, &P::eval<3, Kernel, true, false, true>},
+        {&P::eval<3, Kernel, true, true, false>, &P::eval<3, Kernel, true, true, true>}}}};
+  (pair->*table[dimension == 3][artificial_stress][virial][levels])();
+}
+
+/* ----------------------------------------------------------------------
+   each owned and ghost atom's signed period at this evaluation (soil_level_steps.h): ghosts
+   have their owners' h, and every rank the same schedule
+------------------------------------------------------------------------- */
+
+void PairSPHSoil::pack_step_periods()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  // the periods follow h and h_min, which change where LAMMPS reneighbours (splits, merges,
+  // sph_soil/set) or where the hierarchy changes: kept between
+  bool fresh = neighbor->ago == 0 || schedule->finest_h != periods_finest_h;
+  if (atom->nmax > nmax_periods) {
+    nmax_periods = atom->nmax;
+    memory->destroy(step_periods);
+    memory->destroy(atom_periods);
+    memory->create(step_periods, nmax_periods, "pair:step_periods");
+    memory->create(atom_periods, nmax_periods, "pair:atom_periods");
+    fresh = true;
+  }
+  const int64_t now = update->ntimestep;
+  if (fresh) {
+    const int *type = atom->type;
+    const int *const wall_kind = walls->kinds();
+    const double *h = avec->smoothing_length;
+    const double finest_h = schedule->finest_h;
+    for (int i = 0; i < nall; i++)
+      atom_periods[i] = wall_kind[type[i]] != SPHSoil::NEIGHBOUR_SOIL ? 0 : SPHSoil::step_period(h[i], finest_h);
+    periods_finest_h = finest_h;
+  }
+  for (int i = 0; i < nall; i++) {
+    const int period = atom_periods[i];
+    step_periods[i] = period == 0 ? -INFINITY
+                                  : (SPHSoil::ends_step_pow2(now, period) ? (double) period : -(double) period);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -200,7 +246,7 @@ inline bool PairSPHSoil::pair_geometry(const double *xi, double hi, const double
 template <int DIMENSION, bool VIRIAL>
 SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double sign,
                                                      const double dx[3], double r2, double hij,
-                                                     double factor, double c_ij)
+                                                     double factor, double c_ij, double weight)
 {
   constexpr int D = DIMENSION;
   const int newton_pair = force->newton_pair, nlocal = atom->nlocal;
@@ -232,13 +278,16 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
     if (slip == SPHSoil::SLIP_FRICTION && push > 0.0) {
       const double area =
           SPHSoil::contact_area(ps[P_VOLUME], pw[P_MASS] / rhos, factor, image.normal_separation);
-      walls->interface()->add_pair(soil, wall, ps[P_MASS] * pw[P_MASS] * push,
+      // (stepping per level: the impulse of the pair's period; the area in proportion, so that
+      // the interface's pressure is the contact's)
+      walls->interface()->add_pair(soil, wall, weight * ps[P_MASS] * pw[P_MASS] * push,
                                    walls->frictions()[wall_type], normal, pw + P_V,
-                                   walls->adhesions()[wall_type], area, update_soil, update_wall);
+                                   walls->adhesions()[wall_type], weight * area, update_soil,
+                                   update_wall);
     }
   }
 
-  const double mw = pw[P_MASS], mass_product = ps[P_MASS] * mw;
+  const double mw = pw[P_MASS], mass_product = weight * ps[P_MASS] * mw;
   // the image's volume: the wall particle's mass at the soil's density
   const double volume = mw / rhos;
   if (VIRIAL)
@@ -252,6 +301,7 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   if (!update_soil) return;
   double *os = sums + (size_t) soil * SUM_ROW<D>();
   os[S_DRHO<D>()] += (continuity_volume ? volume : mw) * terms.density_rate;
+  // (the rates are the particle's own, used where it ends a step: never weighted)
   for (int a = 0; a < D; a++) os[S_FORCE + a] += mass_product * terms.force[a];
   for (int c = 0; c < D; c++)
     for (int d = 0; d < D; d++) os[S_GRADIENT<D>() + c * D + d] += volume * terms.gradient[c][d];
@@ -264,7 +314,8 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
    communication (the atom style carries drho, strain rate and spin back)
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL> void PairSPHSoil::eval()
+template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL, bool LEVELS>
+void PairSPHSoil::eval()
 {
   using SPHSoil::voigt_index;
   constexpr int D = DIMENSION;
@@ -287,6 +338,8 @@ template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL> void
   constexpr int ROW = SUM_ROW<D>();
   constexpr int DRHO = S_DRHO<D>(), GRADIENT = S_GRADIENT<D>();
   const int *const partners = neighbours.partner_data();
+  // stepping per level: each pair weighted by its period, skipped where neither ends a step
+  const double *const periods = LEVELS ? step_periods : nullptr;
   // the continuity sum's weight of a partner: its volume, or its mass (the paper's form)
   const int weight_column = continuity_volume ? P_VOLUME : P_MASS;
 
@@ -304,6 +357,15 @@ template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL> void
     const double hi = pi[P_H];
     const double mi = pi[P_MASS], rhoi = pi[P_RHO], volume_i = pi[P_VOLUME];
     const double *c_i = c_type[itype];
+    const double period_i = LEVELS ? periods[i] : 1.0;
+    if (LEVELS && period_i < 0.0) {
+      // a particle that does not end a step now: nothing to do unless a partner does (most of
+      // the coarse particles, most of the time)
+      bool any = false;
+      for (int jj = neighbours.first(i); jj < neighbours.end(i) && !any; jj++)
+        any = periods[partners[jj]] > 0.0;
+      if (!any) continue;
+    }
 
     // i's shares, accumulated here and stored once after the j loop
     double drho_i = 0.0, force_i[D], gradient_i[D][D];
@@ -320,6 +382,11 @@ template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL> void
     const int plain_end = neighbours.plain_end(i);
     for (int jj = neighbours.first(i); jj < plain_end; jj++) {
       const int j = partners[jj];
+      double weight = 1.0;
+      if (LEVELS) {
+        weight = SPHSoil::pair_step_weight(period_i, periods[j]);
+        if (weight == 0.0) continue;
+      }
       const double *pj = in + (size_t) j * SPHSoil::PACKED;
       PairGeometry g;
       if (!pair_geometry<D, Kernel>(xi, hi, pj, g)) continue;
@@ -352,7 +419,8 @@ template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL> void
       SPHSoil::pair_terms<D>(g.dx, g.r2, g.hij, viscosity_h, g.factor, dv, approach, stress_sum, 0.5 * (rhoi + pj[P_RHO]), c_i[jtype], alpha,
                              beta_viscosity, terms);
 
-      const double mj = pj[P_MASS], volume_j = pj[P_VOLUME], mass_product = mi * mj;
+      const double mj = pj[P_MASS], volume_j = pj[P_VOLUME];
+      const double mass_product = LEVELS ? weight * mi * mj : mi * mj;
       if (VIRIAL)
         ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, mass_product * terms.force[0],
                      mass_product * terms.force[1], D == 3 ? mass_product * terms.force[2] : 0.0,
@@ -384,10 +452,15 @@ template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL> void
     const bool wall_i = wall_kind[itype] == SPHSoil::NEIGHBOUR_MIRROR_WALL;
     for (int jj = plain_end; jj < neighbours.end(i); jj++) {
       const int j = partners[jj];
+      double weight = 1.0;
+      if (LEVELS) {
+        weight = SPHSoil::pair_step_weight(period_i, periods[j]);
+        if (weight == 0.0) continue;
+      }
       PairGeometry g;
       if (!pair_geometry<D, Kernel>(xi, hi, in + (size_t) j * SPHSoil::PACKED, g)) continue;
       mirror_wall_pair<D, VIRIAL>(wall_i ? j : i, wall_i ? i : j, wall_i ? -1.0 : 1.0, g.dx, g.r2, g.hij,
-                          g.factor, c_i[type[j]]);
+                          g.factor, c_i[type[j]], weight);
     }
   }
 

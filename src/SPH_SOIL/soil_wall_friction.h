@@ -89,10 +89,12 @@ constexpr double INTERFACE_RELAXATION = 20.0;
 // from its contact sums. `pressure` is its interface pressure p~ (the state of the regularization, see
 // the header; NO_CONTACT before its first contact), updated here. Returns true if the particle
 // slides (the trial force exceeded the limit). No contact (sum N_ab <= 0): 0, and the state
-// goes back to NO_CONTACT.
+// goes back to NO_CONTACT. With a time step per level (soil_level_steps.h), the particle's step
+// is `period` time steps: its interface pressure relaxes over it (the sums and f then hold the
+// impulses of that period, and the sticking force still stops the slip within dt).
 inline bool contact_friction(const double contact[CONTACT_SUMS], double mass, const double f[3],
                              const double v[3], double h, double wave_speed, double dt,
-                             double &pressure, double ratio[3])
+                             double &pressure, double ratio[3], double period = 1.0)
 {
   ratio[0] = ratio[1] = ratio[2] = 0.0;
   const double normal_force = contact[C_NORMAL_FORCE], area = contact[C_AREA];
@@ -123,7 +125,7 @@ inline bool contact_friction(const double contact[CONTACT_SUMS], double mass, co
   const double contact_pressure = normal_force / area;
   if (pressure < 0.0) pressure = contact_pressure;
   const double rate = (std::sqrt(slip2) + wave_speed / INTERFACE_RELAXATION) / h;
-  pressure += (contact_pressure - pressure) * std::fmin(1.0, rate * dt);
+  pressure += (contact_pressure - pressure) * std::fmin(1.0, rate * period * dt);
   const double mu = contact[C_FRICTION] * inv_normal_force;
   const double limit = mu * pressure * area + contact[C_ADHESION];
   const bool sliding = trial2 > limit * limit;

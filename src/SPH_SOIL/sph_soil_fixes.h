@@ -18,6 +18,7 @@
 #include "lammps.h"
 #include "modify.h"
 #include "update.h"
+#include "soil_level_steps.h"
 
 #include <mpi.h>
 #include <vector>
@@ -27,6 +28,19 @@ namespace SPHSoilFixes {
 
 // the name under which fix sph/soil answers extract()
 constexpr const char *INTEGRATOR = "sph_soil_integrator";
+// and under which it hands out its time-step hierarchy (SPHSoil::StepSchedule)
+constexpr const char *SCHEDULE = "sph_soil_schedule";
+
+// the time-step hierarchy of the first fix sph/soil; nullptr without one
+inline const SPHSoil::StepSchedule *step_schedule(LAMMPS *lmp)
+{
+  for (int i = 0; i < lmp->modify->nfix; i++) {
+    int dim = 0;
+    if (void *found = lmp->modify->fix[i]->extract(SCHEDULE, dim))
+      return static_cast<const SPHSoil::StepSchedule *>(found);
+  }
+  return nullptr;
+}
 
 // the simulated time now (LAMMPS's thermo keyword `time`), also across changes of the time step
 inline double elapsed_time(const Update *update)

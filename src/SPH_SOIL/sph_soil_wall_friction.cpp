@@ -20,7 +20,7 @@ using SPHSoil::CONTACT_SUMS;
 
 SPHSoilWallFriction::SPHSoilWallFriction(LAMMPS *lmp, Pair *owner_) :
     Pointers(lmp), owner(owner_), nmax(0), contact(nullptr), ratio(nullptr), reaction(nullptr),
-    exchange(CONTACTS)
+    step_periods(nullptr), exchange(CONTACTS)
 {
 }
 
@@ -68,13 +68,17 @@ void SPHSoilWallFriction::apply(const double *h, double *pressures)
   for (int i = 0; i < nlocal; i++) {
     double *r = ratio + (size_t) 3 * i;
     const double *c = contact + (size_t) i * CONTACT_SUMS;
+    if (step_periods && step_periods[i] < 0.0) {
+      r[0] = r[1] = r[2] = 0.0;    // between its step's ends: no wall pair, the state kept
+      continue;
+    }
     if (!(c[SPHSoil::C_NORMAL_FORCE] > 0.0)) {
       r[0] = r[1] = r[2] = 0.0;
       pressures[i] = SPHSoil::NO_CONTACT;
       continue;
     }
     SPHSoil::contact_friction(c, rmass[i], f[i], v[i], h[i], wave_speed_of_type[type[i]], dt,
-                              pressures[i], r);
+                              pressures[i], r, step_periods ? step_periods[i] : 1.0);
     for (int a = 0; a < 3; a++) f[i][a] += r[a] * c[SPHSoil::C_NORMAL_FORCE];
   }
   exchange = RATIOS;

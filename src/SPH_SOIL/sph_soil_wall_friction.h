@@ -51,6 +51,10 @@ class SPHSoilWallFriction : protected Pointers {
   // atoms' smoothing lengths; `pressures` the owned atoms' interface pressures (the state of the
   // regularization, soil_wall_friction.h), updated
   void apply(const double *h, double *pressures);
+  // stepping per level: the pair style's signed periods of this step's atoms (soil_level_steps.h;
+  // nullptr with one global step). A particle that does not end a step has no pair with a wall
+  // this step: its interface keeps its state, and one that does relaxes over its own step
+  void set_step_periods(const double *periods) { step_periods = periods; }
 
   // the communication of apply(), handed on by the walls unit
   enum Exchange { CONTACTS, RATIOS, REACTIONS };
@@ -74,6 +78,7 @@ class SPHSoilWallFriction : protected Pointers {
   double *contact;     // per atom, SPHSoil::CONTACT_SUMS
   double *ratio;       // per atom, friction force / normal force (3)
   double *reaction;    // per atom, the walls' shares (3)
+  const double *step_periods;
   Exchange exchange;
 };
 
