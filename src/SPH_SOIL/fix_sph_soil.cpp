@@ -35,6 +35,14 @@ namespace {
 constexpr double BIG = 1.0e30;
 }
 
+// the predictor and the corrector, inlined into each integration loop (as one function each
+// they cost a call per particle and the loops' registers: +3% instructions per particle-step)
+#if defined(__GNUC__)
+#define SPH_SOIL_INLINE inline __attribute__((always_inline))
+#else
+#define SPH_SOIL_INLINE inline
+#endif
+
 /* ---------------------------------------------------------------------- */
 
 FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
@@ -327,7 +335,7 @@ void FixSPHSoil::final_integrate()
    (doc/theory.rst 4.1): positive whatever the rate
 ------------------------------------------------------------------------- */
 
-void FixSPHSoil::predict(int i, double step)
+SPH_SOIL_INLINE void FixSPHSoil::predict(int i, double step)
 {
   double *rho = atom->rho;
   double *old = integrator_state[i];
@@ -344,7 +352,7 @@ void FixSPHSoil::predict(int i, double step)
 
 // Heun corrector: y(t + dt) = y(t) + dt/2 (rate(t) + rate(t + dt)), the predictor having made
 // the full step with rate(t)
-bool FixSPHSoil::correct(int i, double half_step)
+SPH_SOIL_INLINE bool FixSPHSoil::correct(int i, double half_step)
 {
   double *rho = atom->rho;
   const double *old = integrator_state[i];

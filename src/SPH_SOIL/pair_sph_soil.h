@@ -134,6 +134,7 @@ class PairSPHSoil : public Pair {
   double *step_periods;
   int *atom_periods;           // the periods (0: a wall), kept from one list to the next
   double periods_finest_h;     // the h_min they were computed with
+  std::vector<int> active_partners;    // the loop's: an atom's partners that end a step
   bool per_level() const { return schedule && schedule->per_level; }
   void pack_step_periods();
   template <int DIMENSION> void unpack_sums();

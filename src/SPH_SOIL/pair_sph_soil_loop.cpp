@@ -357,14 +357,24 @@ void PairSPHSoil::eval()
     const double hi = pi[P_H];
     const double mi = pi[P_MASS], rhoi = pi[P_RHO], volume_i = pi[P_VOLUME];
     const double *c_i = c_type[itype];
+    // the plain pairs to visit: all of i's, or, with stepping per level, where i does not end a
+    // step, those whose partner does (collected here; none: nothing to do for i, most of the
+    // coarse particles most of the time). Their weight is the finer period.
+    const int plain_end = neighbours.plain_end(i);
+    const int *plain_partners = partners + neighbours.first(i);
+    int plain_count = plain_end - neighbours.first(i);
     const double period_i = LEVELS ? periods[i] : 1.0;
+    const double unsigned_period_i = LEVELS ? std::fabs(period_i) : 1.0;
     if (LEVELS && period_i < 0.0) {
-      // a particle that does not end a step now: nothing to do unless a partner does (most of
-      // the coarse particles, most of the time)
-      bool any = false;
-      for (int jj = neighbours.first(i); jj < neighbours.end(i) && !any; jj++)
-        any = periods[partners[jj]] > 0.0;
-      if (!any) continue;
+      if ((int) active_partners.size() < plain_count) active_partners.resize(plain_count);
+      int count = 0;
+      for (int k = 0; k < plain_count; k++)
+        if (periods[plain_partners[k]] > 0.0) active_partners[count++] = plain_partners[k];
+      bool mirror = false;
+      for (int jj = plain_end; jj < neighbours.end(i) && !mirror; jj++) mirror = periods[partners[jj]] > 0.0;
+      if (count == 0 && !mirror) continue;
+      plain_partners = active_partners.data();
+      plain_count = count;
     }
 
     // i's shares, accumulated here and stored once after the j loop
@@ -379,13 +389,12 @@ void PairSPHSoil::eval()
     // never used). Seen from i: grad = dW/dx_i; j gets the same terms with the opposite force
     // and dW/dx_j = -grad (Newton's third law). Without Newton's third law for ghost pairs,
     // a ghost j's row is written and never read (unpack_sums()).
-    const int plain_end = neighbours.plain_end(i);
-    for (int jj = neighbours.first(i); jj < plain_end; jj++) {
-      const int j = partners[jj];
+    for (int k = 0; k < plain_count; k++) {
+      const int j = plain_partners[k];
       double weight = 1.0;
       if (LEVELS) {
-        weight = SPHSoil::pair_step_weight(period_i, periods[j]);
-        if (weight == 0.0) continue;
+        const double period_j = std::fabs(periods[j]);
+        weight = unsigned_period_i < period_j ? unsigned_period_i : period_j;
       }
       const double *pj = in + (size_t) j * SPHSoil::PACKED;
       PairGeometry g;

@@ -13,7 +13,9 @@ the critical ratio is reported as the bracket's middle, against Pastor, Thai & F
 displacement against time for every run.
 
   python3 -m sph_soil vertical-cut [--lmp build/lmp] [--np 2] [--d 0.025] [--low 3.0] [--high 4.5]
-                        [--steps 4] [--creep 0.001] [--refine] [--workdir /tmp/sph_soil_vertical_cut]
+                        [--steps 4] [--creep 0.001] [--refine [N]] [--stepping global|level]
+                        [--criterion strain|shear_strain_rate] [--threshold T]
+                        [--workdir /tmp/sph_soil_vertical_cut]
                         [--json examples/vertical_cut/vertical_cut.json]
                         [--plot examples/vertical_cut/vertical_cut.png]
 """
@@ -46,11 +48,30 @@ def measure(directory, ratio, creep=CREEP, seconds=None, log='log.lammps'):
             'time': data[:, 1].tolist(), 'moved': data[:, 2].tolist()}
 
 
+def refinement_variables(args):
+    """The input's refinement variables of the command line (none without --refine)."""
+    if not args.refine:
+        return [('refine', '0')]
+    return [('refine', str(args.refine)), ('stepping', args.stepping), ('criterion', args.criterion)] + \
+        ([('threshold', f'{args.threshold:g}')] if args.threshold is not None else [])
+
+
+def tag(args):
+    """The runs' directory tag of a configuration: d, levels, stepping, criterion."""
+    if not args.refine:
+        return f'd{args.d:g}'
+    t = f'd{args.d:g}_refined' + (f'{args.refine}' if args.refine > 1 else '')
+    if args.stepping != 'global':
+        t += f'_{args.stepping}'
+    if args.criterion != 'strain' or args.threshold is not None:
+        t += f'_{args.criterion}' + (f'{args.threshold:g}' if args.threshold is not None else '')
+    return t
+
+
 def run(lmp, args, ratio):
-    tag = '_refined' if args.refine else ''
-    directory = os.path.join(args.workdir, f'd{args.d:g}{tag}_ratio{ratio:.4f}')
+    directory = os.path.join(args.workdir, f'{tag(args)}_ratio{ratio:.4f}')
     done = lmp.run(EXAMPLE, directory, np=args.np, check=True,
-                   variables=[('ratio', f'{ratio:.6g}'), ('d', f'{args.d:g}'), ('refine', '1' if args.refine else '0')])
+                   variables=[('ratio', f'{ratio:.6g}'), ('d', f'{args.d:g}')] + refinement_variables(args))
     return measure(directory, ratio, args.creep, done.seconds)
 
 
@@ -89,8 +110,15 @@ def add_arguments(p):
     p.add_argument('--steps', type=int, default=4)
     p.add_argument('--creep', type=float, default=CREEP,
                    help='failure: the crest moves more than this times H over the last 30%% of the run')
-    p.add_argument('--refine', action='store_true',
-                   help='dynamic refinement (-var refine 1): the particles that shear split once')
+    p.add_argument('--refine', type=int, nargs='?', const=1, default=0,
+                   help='dynamic refinement (-var refine N, N levels deep; 1 without a value): the '
+                        'particles that shear split')
+    p.add_argument('--stepping', choices=('global', 'level'), default='global',
+                   help='with --refine: one time step for all, or a time step per level')
+    p.add_argument('--criterion', choices=('strain', 'shear_strain_rate'), default='strain',
+                   help='with --refine: what splits (the input\'s -var criterion)')
+    p.add_argument('--threshold', type=float, default=None,
+                   help='with --refine: the criterion\'s threshold (the input\'s default without it)')
     p.add_argument('--workdir', default='/tmp/sph_soil_vertical_cut')
     p.add_argument('--json')
     p.add_argument('--plot')
@@ -101,13 +129,17 @@ def main(args):
     runs, low, high = bisect(lambda ratio: run(lmp, args, ratio), args.low, args.high, args.steps,
                              'vertical_cut')
     critical = 0.5 * (low + high)
-    summary = {'spacing_m': args.d, 'refined': args.refine, 'late_creep_threshold_over_H': args.creep,
+    summary = {'spacing_m': args.d, 'refined': args.refine, 'stepping': args.stepping if args.refine else None,
+               'criterion': args.criterion if args.refine else None, 'threshold': args.threshold,
+               'wall_seconds_all_runs': round(sum(r['wall_seconds'] or 0.0 for r in runs), 1),
+               'late_creep_threshold_over_H': args.creep,
                'stands_up_to': low, 'fails_from': high, 'critical_ratio': critical,
                'half_width': 0.5 * (high - low), 'pastor_2000': PASTOR,
                'critical_over_reference': critical / (0.5 * sum(PASTOR)),
                'runs': [{k: v for k, v in r.items() if k not in ('time', 'moved')} for r in runs]}
     report.write_json(summary, args.json, indent=1, end='')
     if args.plot:
-        refined = ', refined once' if args.refine else ''
+        refined = (f', refined {"once" if args.refine == 1 else f"{args.refine} levels"}'
+                   f'{", a step per level" if args.stepping == "level" else ""}' if args.refine else '')
         plot(runs, f'Vertical cut, phi = 0, d = {100 * args.d:g} cm{refined}: critical gamma H / c = {critical:.2f} '
                    f'+- {0.5 * (high - low):.2f} (Pastor 2000: 3.78)', args.plot)
