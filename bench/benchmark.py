@@ -3,12 +3,15 @@
 sph/taitwater and smd/ulsph on the same 2D layout (in.bench_*), as ratios from one run.
 
     bench/benchmark.py [--lmp build/lmp] [--repeat 1] [--json FILE] [--bars] [--callgrind] [--parallel]
-                       [--refinement]
+                       [--refinement] [--levels]
 
 Each input runs on 1 MPI rank; the best of --repeat runs counts, the styles taking turns. --bars also times the short
 aluminium-bar example on all cores. --callgrind adds instructions per particle-step of each style, counted by
 valgrind's callgrind over 50 steps minus a run of 0 steps (the set-up): a figure that does not drift with the load
-of the machine. --parallel times a refined run of about 100k particles at two levels (in.bench_refined) on 1 and 2
+of the machine. --levels measures a time step per level (fix sph/soil stepping level) against one global step on
+two statically refined layouts of in.bench_refined at 1.4 mm (a band of a tenth of the block refined, and its right
+half): instructions per step (callgrind, 200 steps minus 0) and loop seconds (interleaved, the median of --repeat, at
+least 3) in both modes, each speed-up against the ideal N / sum 1/n of the layout's level populations. --parallel times a refined run of about 100k particles at two levels (in.bench_refined) on 1 and 2
 ranks: the parallel efficiency after splits, with LAMMPS's breakdown of where the time goes. --refinement adds, for
 the aluminium bars at the comparison's spacing, the instructions per particle-step and per soil particle-step of the
 coarse and the statically refined (fine) lattice (callgrind, 40 steps minus 0: what refinement costs per particle,
@@ -150,6 +153,44 @@ def refinement_costs(lmp, work):
     return out
 
 
+LEVEL_LAYOUTS = {'band': '0.18', 'half': '0.1'}
+
+
+def level_stepping(lmp, work, repeat):
+    """A time step per level against one global step on in.bench_refined's refined layouts: the ideal speed-up from
+    the populations (the input prints it), instructions per step and interleaved loop seconds, global and level."""
+    infile = os.path.join(HERE, 'in.bench_refined')
+    out = {'note': 'bars block at d = 1.4 mm, refined once from x = from on (band: 0.18, a tenth of it; half: 0.1), '
+                   '1 rank, fix balance weighted by step_period; speed-up = global / level'}
+    for name, start in LEVEL_LAYOUTS.items():
+        base = ['-var', 'd', '0.0014', '-var', 'from', start]
+        entry = {'from_m': float(start)}
+        run(lmp, infile, work, extra=base + ['-var', 'stepping', 'level', '-var', 'steps', '0'])
+        m = Log(os.path.join(work, 'log.bench')).search(
+            r'levels: (\d+) soil particles, (\S+) evaluations per step: ideal speed-up (\S+)')
+        entry['soil_particles'], entry['evaluations_per_step'], entry['ideal_speedup'] = \
+            int(m.group(1)), float(m.group(2)), float(m.group(3))
+        for mode in ('global', 'level'):
+            extra = base + ['-var', 'stepping', mode]
+            entry[f'instructions_per_step_{mode}'] = (instructions(lmp, infile, work, 200, extra) -
+                                                     instructions(lmp, infile, work, 0, extra)) / 200
+        seconds = {'global': [], 'level': []}
+        for _ in range(max(repeat, 3)):
+            for mode in ('global', 'level'):
+                seconds[mode].append(run(lmp, infile, work, extra=base + ['-var', 'stepping', mode,
+                                                                          '-var', 'steps', '1200'])['seconds'])
+        for mode in seconds:
+            entry[f'loop_seconds_{mode}'] = sorted(seconds[mode])[len(seconds[mode]) // 2]
+        entry['speedup_instructions'] = entry['instructions_per_step_global'] / entry['instructions_per_step_level']
+        entry['speedup_seconds'] = entry['loop_seconds_global'] / entry['loop_seconds_level']
+        for key in ('instructions', 'seconds'):
+            entry[f'fraction_of_ideal_{key}'] = entry[f'speedup_{key}'] / entry['ideal_speedup']
+        print(f'benchmark: levels, {name}: ideal {entry["ideal_speedup"]:.3f}, instructions '
+              f'{entry["speedup_instructions"]:.3f}, seconds {entry["speedup_seconds"]:.3f}', file=sys.stderr)
+        out[name] = entry
+    return out
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     add_lmp_argument(p)
@@ -163,6 +204,8 @@ def main():
     p.add_argument('--refinement', action='store_true',
                    help='also count the instructions of coarse and refined bars per (soil) particle-step and '
                         'add the latest refinement comparison\'s cost figures')
+    p.add_argument('--levels', action='store_true',
+                   help='also measure a time step per level against one global step on two refined layouts')
     a = p.parse_args()
     lmp = Lammps(a.lmp).require()
 
@@ -185,20 +228,23 @@ def main():
             r['note'] = 'short mode (300 steps); atoms include wall particles'
             results['aluminium_bars_short'] = r
         if a.parallel:
-            # 1 and 2 ranks in turn; the best of --repeat each
-            best = {}
-            for _ in range(a.repeat):
-                for np in (1, 2):
-                    r = run(lmp, os.path.join(HERE, 'in.bench_refined'), work, np=np)
-                    if np not in best or r['seconds'] < best[np]['seconds']:
-                        best[np] = r
-            efficiency = best[1]['seconds'] / (2 * best[2]['seconds'])
-            results['refined_parallel'] = {
-                'note': 'aluminium bars at 0.7 mm, the right half refined once (0.5, 0.5), fix balance; '
-                        'efficiency = t(1 rank) / (2 t(2 ranks))',
-                'one_rank': best[1], 'two_ranks': best[2], 'efficiency': efficiency}
-            print(f'benchmark: refined run, {best[1]["atoms"]} atoms: 2-rank efficiency {efficiency:.3f}',
-                  file=sys.stderr)
+            # 1 and 2 ranks in turn; the best of --repeat each; one global step, and a time step per
+            # level with the balance weighted by each particle's share of the evaluations
+            for key, stepping in (('refined_parallel', 'global'), ('refined_parallel_levels', 'level')):
+                best = {}
+                for _ in range(a.repeat):
+                    for np in (1, 2):
+                        r = run(lmp, os.path.join(HERE, 'in.bench_refined'), work, np=np,
+                                extra=['-var', 'stepping', stepping])
+                        if np not in best or r['seconds'] < best[np]['seconds']:
+                            best[np] = r
+                efficiency = best[1]['seconds'] / (2 * best[2]['seconds'])
+                results[key] = {
+                    'note': 'aluminium bars at 0.7 mm, the right half refined once (0.5, 0.5), fix balance '
+                            f'weighted by step_period, stepping {stepping}; efficiency = t(1 rank) / (2 t(2 ranks))',
+                    'one_rank': best[1], 'two_ranks': best[2], 'efficiency': efficiency}
+                print(f'benchmark: refined run ({stepping}), {best[1]["atoms"]} atoms: 2-rank efficiency '
+                      f'{efficiency:.3f}', file=sys.stderr)
         if a.callgrind:
             for name, (infile, extra) in STYLES.items():
                 n = instructions_per_particle_step(lmp, os.path.join(HERE, infile), work,
@@ -208,6 +254,8 @@ def main():
 
         if a.refinement:
             results['refinement'] = refinement_costs(lmp, work)
+        if a.levels:
+            results['level_stepping'] = level_stepping(lmp, work, a.repeat)
 
     ours = results['sph_soil']['particle_steps_per_second_per_core']
     summary = {

@@ -8,7 +8,9 @@
 #include "atom_vec_sph_soil.h"
 #include "compute.h"
 #include "fix.h"
+#include "input.h"
 #include "modify.h"
+#include "variable.h"
 #include "soil_level_steps.h"
 
 #include <cmath>
@@ -123,6 +125,18 @@ class LevelStepping : public SoilTest {
     return all * all_mass;
   }
   Fix *fix(const char *id) { return lmp->modify->fix[lmp->modify->find_fix(id)]; }
+  // mean x velocity of the soil (type 1, every level alike) on all ranks
+  static double mean_soil_velocity(LAMMPS *lmp)
+  {
+    double local[2] = {0.0, 0.0}, global[2];
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      if (lmp->atom->type[i] == 1) {
+        local[0] += lmp->atom->v[i][0] * lmp->atom->rmass[i];
+        local[1] += lmp->atom->rmass[i];
+      }
+    MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return global[0] / global[1];
+  }
 };
 
 }    // namespace
@@ -231,4 +245,56 @@ TEST_F(LevelStepping, RefinementAndMergingFollowTheHierarchyAndRestartContinues)
     for (size_t k = 1; k < state_names().size(); k++)
       ASSERT_NEAR(restarted.at(entry.first)[k], entry.second[k], 1e-11 * std::fabs(entry.second[k]) + 1e-15)
           << "atom " << entry.first << " " << state_names()[k];
+}
+
+// A frictional floor across levels: a strong block, its right half refined once, on a floor of
+// friction mu under gravity tilted by theta. Its coarse particles meet the floor at their own
+// steps' ends with the contact of their period, its fine ones every step: below the friction
+// angle the block sticks, above it slides as a rigid block, g (sin theta - mu cos theta).
+TEST_F(LevelStepping, AFrictionalFloorHoldsAndSlidesAcrossLevels)
+{
+  const double g = 9.81, mu = 0.4;
+  for (const double tan_theta : {0.8 * mu, 1.5 * mu}) {
+    const double theta = std::atan(tan_theta);
+    std::vector<double> velocity, time;
+    HIDE_OUTPUT([&] {
+      command("clear");
+      for (const auto &line :
+           {"units si", "dimension 2", "boundary f f p", "atom_style sph/soil", "atom_modify map array",
+            "lattice sq 0.002 origin 0.5 0.5 0",
+            "region box block -0.01 0.2 -0.01 0.03 -0.001 0.001 units box", "create_box 2 box",
+            "region soil block 0 0.08 0 0.008 INF INF units box",
+            "region floor block -0.006 0.196 -0.006 0 INF INF units box", "create_atoms 1 region soil",
+            "create_atoms 2 region floor", "group soil type 1", "group floor type 2",
+            "sph_soil/set all mass $(2000*0.002*0.002) h 0.0024 density 2000"})
+        command(line);
+      command(fmt::format("sph_soil/set soil geostatic 0.008 2000 {} 0.5", g * std::cos(theta)));
+      for (const auto &line :
+           {"sph_soil/set floor wall 0 0 0 0 1 0", "pair_style sph/soil alpha 1 beta 1 artificial_stress 0",
+            "pair_coeff 1 1 soil 2000 2e6 0.3 30 0 1e5", "pair_coeff 2 2 wall friction 0.4",
+            "region right block 0.04 INF INF INF INF INF units box", "group right region right",
+            "group refined intersect soil right", "sph_soil/refine refined"})
+        command(line);
+      command(fmt::format("fix gravity soil gravity {} vector {} {} 0", g, std::sin(theta), -std::cos(theta)));
+      for (const auto &line : {"fix integrate soil sph/soil cfl 0.1 stepping level", "neighbor 0.0005 bin",
+                               "neigh_modify every 1 delay 0 check yes", "thermo 0",
+                               "variable t equal time", "run 4000 post no"})
+        command(line);
+      for (int k = 0; k < 3; k++) {
+        command("run 4000 post no");
+        velocity.push_back(mean_soil_velocity(lmp));
+        time.push_back(lmp->input->variable->compute_equal("v_t"));
+      }
+    });
+    EXPECT_EQ(fix("integrate")->compute_vector(3), 2.0);
+    const double acceleration = (velocity[2] - velocity[0]) / (time[2] - time[0]);
+    const double rigid_sliding = g * (std::sin(theta) - mu * std::cos(theta));
+    if (rank() == 0)
+      std::cerr << "tan(theta)/mu " << tan_theta / mu << ": acceleration " << acceleration
+                << " (rigid block sliding " << rigid_sliding << "), v " << velocity[2] << "\n";
+    if (tan_theta > mu)
+      EXPECT_NEAR(acceleration / rigid_sliding, 1.0, 0.02) << "tan(theta) / mu = " << tan_theta / mu;
+    else
+      EXPECT_LT(std::fabs(velocity[2]), 1.0e-5) << "tan(theta) / mu = " << tan_theta / mu;
+  }
 }

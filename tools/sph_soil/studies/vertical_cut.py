@@ -14,7 +14,7 @@ displacement against time for every run.
 
   python3 -m sph_soil vertical-cut [--lmp build/lmp] [--np 2] [--d 0.025] [--low 3.0] [--high 4.5]
                         [--steps 4] [--creep 0.001] [--refine [N]] [--stepping global|level]
-                        [--criterion strain|shear_strain_rate] [--threshold T]
+                        [--criterion strain|shear_strain_rate] [--threshold T] [--every N] [--balance]
                         [--workdir /tmp/sph_soil_vertical_cut]
                         [--json examples/vertical_cut/vertical_cut.json]
                         [--plot examples/vertical_cut/vertical_cut.png]
@@ -52,7 +52,8 @@ def refinement_variables(args):
     """The input's refinement variables of the command line (none without --refine)."""
     if not args.refine:
         return [('refine', '0')]
-    return [('refine', str(args.refine)), ('stepping', args.stepping), ('criterion', args.criterion)] + \
+    return [('refine', str(args.refine)), ('stepping', args.stepping), ('criterion', args.criterion),
+            ('check', str(args.every)), ('balance', '1' if args.balance else '0')] + \
         ([('threshold', f'{args.threshold:g}')] if args.threshold is not None else [])
 
 
@@ -65,6 +66,10 @@ def tag(args):
         t += f'_{args.stepping}'
     if args.criterion != 'strain' or args.threshold is not None:
         t += f'_{args.criterion}' + (f'{args.threshold:g}' if args.threshold is not None else '')
+    if args.every != 10:
+        t += f'_N{args.every}'
+    if args.balance:
+        t += '_balanced'
     return t
 
 
@@ -117,6 +122,11 @@ def add_arguments(p):
                    help='with --refine: one time step for all, or a time step per level')
     p.add_argument('--criterion', choices=('strain', 'shear_strain_rate'), default='strain',
                    help='with --refine: what splits (the input\'s -var criterion)')
+    p.add_argument('--every', type=int, default=10,
+                   help='with --refine: check every N steps (the input rounds it up to a multiple of 2^N '
+                        'with --stepping level)')
+    p.add_argument('--balance', action='store_true',
+                   help='with --refine: balance the ranks\' work (fix balance weighted by step_period)')
     p.add_argument('--threshold', type=float, default=None,
                    help='with --refine: the criterion\'s threshold (the input\'s default without it)')
     p.add_argument('--workdir', default='/tmp/sph_soil_vertical_cut')
@@ -131,6 +141,7 @@ def main(args):
     critical = 0.5 * (low + high)
     summary = {'spacing_m': args.d, 'refined': args.refine, 'stepping': args.stepping if args.refine else None,
                'criterion': args.criterion if args.refine else None, 'threshold': args.threshold,
+               'every': args.every if args.refine else None, 'balanced': bool(args.refine and args.balance),
                'wall_seconds_all_runs': round(sum(r['wall_seconds'] or 0.0 for r in runs), 1),
                'late_creep_threshold_over_H': args.creep,
                'stands_up_to': low, 'fails_from': high, 'critical_ratio': critical,
