@@ -253,20 +253,26 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
       x[i][a] += dtv * v[i][a];
     }
     predict(i, dtv);
-    // the positions only (a non-finite velocity makes them non-finite): what LAMMPS checks
-    // before the next neighbour list; the whole state is checked after the corrector. The
-    // comparisons are false for a NaN too.
-    if (!(x[i][0] >= lo[0] && x[i][0] < hi[0] && x[i][1] >= lo[1] && x[i][1] < hi[1] &&
-          x[i][2] >= lo[2] && x[i][2] < hi[2])) {
-      if (!std::isfinite(x[i][0] + x[i][1] + x[i][2])) {
-        if (lower_id(i, first_unstable)) first_unstable = i;
-      } else if (lower_id(i, first_outside)) {
-        first_outside = i;
-      }
-    }
+    check_position(i, lo, hi, first_unstable, first_outside);
   }
   stop_if_unstable(first_unstable);
   stop_if_left_box(first_outside);
+}
+
+// The positions only (a non-finite velocity makes them non-finite): what LAMMPS checks before
+// the next neighbour list; the whole state is checked after the corrector. The comparisons are
+// false for a NaN too.
+SPH_SOIL_INLINE void FixSPHSoil::check_position(int i, const double lo[3], const double hi[3],
+                                                int &first_unstable, int &first_outside) const
+{
+  const double *x = atom->x[i];
+  if (x[0] >= lo[0] && x[0] < hi[0] && x[1] >= lo[1] && x[1] < hi[1] && x[2] >= lo[2] && x[2] < hi[2])
+    return;
+  if (!std::isfinite(x[0] + x[1] + x[2])) {
+    if (lower_id(i, first_unstable)) first_unstable = i;
+  } else if (lower_id(i, first_outside)) {
+    first_outside = i;
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -456,14 +462,7 @@ void FixSPHSoil::initial_integrate_levels()
       for (int k = 0; k < 6; k++) stress[i][k] += s[STRESS_INCREMENT + k];
       for (int a = 0; a < 3; a++) vest[i][a] += dtv * s[MEAN_ACCELERATION + a];
     }
-    if (!(x[i][0] >= lo[0] && x[i][0] < hi[0] && x[i][1] >= lo[1] && x[i][1] < hi[1] &&
-          x[i][2] >= lo[2] && x[i][2] < hi[2])) {
-      if (!std::isfinite(x[i][0] + x[i][1] + x[i][2])) {
-        if (lower_id(i, first_unstable)) first_unstable = i;
-      } else if (lower_id(i, first_outside)) {
-        first_outside = i;
-      }
-    }
+    check_position(i, lo, hi, first_unstable, first_outside);
   }
   stop_if_unstable(first_unstable);
   stop_if_left_box(first_outside);

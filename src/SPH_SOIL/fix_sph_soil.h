@@ -133,6 +133,9 @@ class FixSPHSoil : public Fix {
   bool lower_id(int i, int j) const { return j < 0 || atom->tag[i] < atom->tag[j]; }
   void stop_if_unstable(int first_unstable);
   void box_limits(double lo[3], double hi[3]) const;
+  // a position beyond the box's fixed faces (or not finite): the lowest ID of each kind
+  void check_position(int i, const double lo[3], const double hi[3], int &first_unstable,
+                      int &first_outside) const;
   void stop_if_left_box(int first_outside);
   std::string likely_causes(double density, double reference_density);
   double stable_timestep();
