@@ -672,6 +672,26 @@ TEST_F(Refinement, WorksUnderAtomStyleHybrid)
 
 // criterion v_name: exactly the particles where the atom-style variable is non-zero split, with
 // the fix and with the command (the lattice sites x < 0.04, y < 0.03: 4 x 3 of them)
+// A criterion of a variable that uses a compute sees the compute's values of the check's step:
+// the fix makes LAMMPS's computes current before it evaluates the variable. (Before, LAMMPS
+// re-evaluated a compute in a variable only after something cleared the computes' flags, e.g.
+// the thermo output: the shear-rate criterion of the examples saw rates up to a thermo interval
+// old, and a fix halt in the input, which clears them every step, changed the splits.)
+TEST_F(Refinement, AVariableCriterionSeesItsComputesOfTheCheck)
+{
+  patch(2, 10, false);
+  HIDE_OUTPUT([&] {
+    command("compute rates all sph/soil/atom shear_strain_rate");
+    command("variable never atom c_rates>1e30");
+    command("fix integrate all sph/soil cfl 0.1");
+    command("fix refine all sph/soil/refine 10 criterion v_never");
+    command("thermo 1000");
+    command("run 35 post no");
+  });
+  auto compute = lmp->modify->compute[lmp->modify->find_compute("rates")];
+  EXPECT_EQ(compute->invoked_peratom, 30);    // the last check, not the first (10)
+}
+
 TEST_F(Refinement, VariableCriterionSplitsExactlyWhereNonZero)
 {
   auto check = [&](const char *what) {

@@ -266,7 +266,12 @@ void FixSPHSoilRefine::end_of_step()
   last_split_step = update->ntimestep;
   last_split = 0;
   std::vector<char> may_split;
+  // a criterion of a variable may use computes: made current now, and ready at the next check
+  // (LAMMPS re-evaluates a compute in a variable only after clearstep_compute(); without it
+  // the criterion saw the values of the last output, up to a thermo interval old)
+  modify->clearstep_compute();
   std::vector<int> parents = selection->parents(groupbit, maxlevel, history(), &may_split);
+  modify->addstep_compute(update->ntimestep + nevery);
   if (merge_time > 0.0) {
     mark_quiet();
     // with merging, a particle that has been quiet for the hold time (one that may merge) does
