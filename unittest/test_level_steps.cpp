@@ -61,9 +61,9 @@ TEST(LevelSteps, PowerOfTwoPeriodsEndWithoutADivision)
 {
   for (int64_t step : {0, 1, 6, 8, 12, 1023, 1024, 4096 + 8})
     for (int period : {1, 2, 4, 8, 1 << 20})
-      EXPECT_EQ(SPHSoil::ends_step_pow2(step, period), SPHSoil::ends_step(step, period))
-          << step << " " << period;
-  EXPECT_DOUBLE_EQ(SPHSoil::ideal_speedup(10.0, 6.0), 10.0 / 6.0);
+      EXPECT_EQ(SPHSoil::ends_step(step, period), step % period == 0) << step << " " << period;
+  EXPECT_EQ(SPHSoil::finer_period(4.0, -2.0), 2.0);
+  EXPECT_EQ(SPHSoil::finer_period(INFINITY, 2.0), 2.0);    // a wall takes its partner's
 }
 
 // ---- in LAMMPS ----------------------------------------------------------------------------
@@ -153,11 +153,7 @@ TEST_F(LevelStepping, OneLevelIsTheGlobalStep)
   commands({"fix integrate all sph/soil cfl 0.1 stepping level", "run 300 post no"});
   const auto levels = gather_state(lmp);
   EXPECT_EQ(fix("integrate")->compute_vector(3), 1.0);
-  ASSERT_EQ(levels.size(), global.size());
-  for (const auto &entry : global)
-    for (size_t k = 1; k < state_names().size(); k++)
-      ASSERT_NEAR(levels.at(entry.first)[k], entry.second[k], 1e-12 * std::fabs(entry.second[k]) + 1e-16)
-          << "atom " << entry.first << " " << state_names()[k];
+  expect_same_state(levels, global, 1e-12, 1e-16);
 }
 
 // Two levels: the coarse particles step every second LAMMPS step (their period 2, from h), the
@@ -239,12 +235,7 @@ TEST_F(LevelStepping, RefinementAndMergingFollowTheHierarchyAndRestartContinues)
   commands({"clear", "units si", "read_restart levels.restart", "neighbor 0.002 bin", "thermo 0"});
   commands(fixes);
   commands({"run 160 post no"});
-  const auto restarted = gather_state(lmp);
-  ASSERT_EQ(restarted.size(), uninterrupted.size());
-  for (const auto &entry : uninterrupted)
-    for (size_t k = 1; k < state_names().size(); k++)
-      ASSERT_NEAR(restarted.at(entry.first)[k], entry.second[k], 1e-11 * std::fabs(entry.second[k]) + 1e-15)
-          << "atom " << entry.first << " " << state_names()[k];
+  expect_same_state(gather_state(lmp), uninterrupted, 1e-11, 1e-15);
 }
 
 // A frictional floor across levels: a strong block, its right half refined once, on a floor of

@@ -70,14 +70,7 @@ class Restart : public SoilTest {
   static void expect_same_state(const std::map<tagint, std::vector<double>> &restarted,
                                 const std::map<tagint, std::vector<double>> &reference)
   {
-    ASSERT_EQ(restarted.size(), reference.size());
-    const auto &names = state_names();
-    for (const auto &entry : reference) {
-      const auto &r = restarted.at(entry.first);
-      for (size_t k = 1; k < names.size(); k++)
-        ASSERT_NEAR(r[k], entry.second[k], 1e-11 * std::fabs(entry.second[k]) + 1e-15)
-            << "atom " << entry.first << " " << names[k];
-    }
+    SPHSoilTesting::expect_same_state(restarted, reference, 1e-11, 1e-15);
   }
 };
 

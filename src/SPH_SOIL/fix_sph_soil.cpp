@@ -164,16 +164,12 @@ void FixSPHSoil::init()
     if (integrated(i))
       for (int k = 0; k < 3; k++) atom->vest[i][k] = atom->v[i][k];
 
-  double min_h, max_h;
-  smoothing_length_range(min_h, max_h);
-  update_schedule(min_h, max_h);
-  if (cfl > 0.0) {
-    const double dt = stable_timestep();
-    if (dt != update->dt) {
-      update->update_time();
-      update->dt = dt;
-      update->dt_default = 0;
-    }
+  // (stable_timestep() sets the hierarchy of stepping per level too)
+  const double dt = stable_timestep();
+  if (cfl > 0.0 && dt != update->dt) {
+    update->update_time();
+    update->dt = dt;
+    update->dt_default = 0;
   }
   reset_dt();
 }
@@ -316,10 +312,20 @@ void FixSPHSoil::stop_if_left_box(int first_outside)
 
 void FixSPHSoil::final_integrate()
 {
-  if (schedule.per_level) return final_integrate_levels();
+  if (schedule.per_level)
+    kick_and_correct<true>();
+  else
+    kick_and_correct<false>();
+}
+
+// the second kick for all; the corrector for every particle (one global step) or for those
+// whose own step ends now (a time step per level, soil_level_steps.h)
+template <bool LEVELS> void FixSPHSoil::kick_and_correct()
+{
   double **v = atom->v, **f = atom->f;
   const double *rmass = atom->rmass;
   const int nlocal = atom->nlocal;
+  const double now = (double) update->ntimestep;
   bigint yielded = 0;
   int first_unstable = -1;
 
@@ -327,7 +333,12 @@ void FixSPHSoil::final_integrate()
     if (!integrated(i)) continue;
     const double dtfm = dtf / rmass[i];
     for (int a = 0; a < 3; a++) v[i][a] += dtfm * f[i][a];
-    if (correct(i, dtf)) yielded++;
+    if (!LEVELS) {
+      if (correct(i, dtf)) yielded++;
+    } else {
+      const double *s = integrator_state[i];
+      if (now == s[STEP_END] && correct(i, 0.5 * (s[STEP_END] - s[STEP_BEGIN]) * dtv)) yielded++;
+    }
     if (unstable(i) && lower_id(i, first_unstable)) first_unstable = i;
   }
   yielded_count = yielded;
@@ -468,27 +479,6 @@ void FixSPHSoil::initial_integrate_levels()
   stop_if_left_box(first_outside);
 }
 
-// the second kick for all; the corrector for the particles whose step ends now
-void FixSPHSoil::final_integrate_levels()
-{
-  double **v = atom->v, **f = atom->f;
-  const double *rmass = atom->rmass;
-  const int nlocal = atom->nlocal;
-  const double now = (double) update->ntimestep;
-  bigint yielded = 0;
-  int first_unstable = -1;
-
-  for (int i = 0; i < nlocal; i++) {
-    if (!integrated(i)) continue;
-    const double dtfm = dtf / rmass[i];
-    for (int a = 0; a < 3; a++) v[i][a] += dtfm * f[i][a];
-    const double *s = integrator_state[i];
-    if (now == s[STEP_END] && correct(i, 0.5 * (s[STEP_END] - s[STEP_BEGIN]) * dtv)) yielded++;
-    if (unstable(i) && lower_id(i, first_unstable)) first_unstable = i;
-  }
-  yielded_count = yielded;
-  stop_if_unstable(first_unstable);
-}
 
 /* ----------------------------------------------------------------------
    a run that goes unstable stops, naming the particle and the step
@@ -609,12 +599,7 @@ void FixSPHSoil::end_of_step()
 void FixSPHSoil::particles_refined(const char *who)
 {
   if (cfl > 0.0) return adapt_timestep();
-  if (schedule.per_level) {
-    double min_h, max_h;
-    smoothing_length_range(min_h, max_h);
-    update_schedule(min_h, max_h);
-  }
-  const double limit = stable_timestep();
+  const double limit = stable_timestep();    // (the hierarchy follows the new smallest h too)
   if (update->dt > limit)
     error->all(FLERR, "{}: after splitting at step {} the timestep {:.6g} exceeds the stability "
                       "limit {:.6g} = {} * min(h) / c_p; use 'cfl 0.1' in fix sph/soil (adaptive "
@@ -797,10 +782,8 @@ double FixSPHSoil::compute_vector(int n)
   if (n == 0) return update->dt;
   if (n == 3) return schedule.per_level ? (double) schedule.largest_period : 1.0;
   if (n == 1) {
-    double local_min_h = BIG, min_h;
-    for (int i = 0; i < atom->nlocal; i++)
-      if (integrated(i)) local_min_h = MIN(local_min_h, avec->smoothing_length[i]);
-    MPI_Allreduce(&local_min_h, &min_h, 1, MPI_DOUBLE, MPI_MIN, world);
+    double min_h, max_h;
+    smoothing_length_range(min_h, max_h);
     return min_h;
   }
   bigint total = 0;

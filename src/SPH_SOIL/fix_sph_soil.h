@@ -54,6 +54,8 @@ class FixSPHSoil : public Fix {
   // after particles were split (smaller h): adapt the time step (cfl), or stop with an error
   // if the user's fixed step is now above the stability limit
   void particles_refined(const char *who);
+  // the time-step hierarchy (one global step unless 'stepping level')
+  const SPHSoil::StepSchedule &step_schedule() const { return schedule; }
 
   // the Heun predictor's rates travel with the atoms (they migrate between the predictor and
   // the corrector)
@@ -116,7 +118,7 @@ class FixSPHSoil : public Fix {
   void predict(int i, double step);
   bool correct(int i, double half_step);
   void initial_integrate_levels();
-  void final_integrate_levels();
+  template <bool LEVELS> void kick_and_correct();
   // the hierarchy from the smallest and largest h (collective)
   void update_schedule(double min_h, double max_h);
   bool restore_pending;    // at the first step of a run: restore the saved rates

@@ -131,8 +131,8 @@ void FixSPHSoilRefine::init()
   if (!integrator) error->all(FLERR, "Fix sph/soil/refine requires fix sph/soil");
   // with a time step per level, splits and merges happen where every level ends a step: the
   // multiples of the largest period, 2^maxlevel for particles that began at one level
-  schedule = SPHSoilFixes::step_schedule(lmp);
-  if (schedule && schedule->per_level && nevery % (1 << maxlevel) != 0)
+  schedule = &integrator->step_schedule();
+  if (schedule->per_level && nevery % (1 << maxlevel) != 0)
     error->all(FLERR, "Fix sph/soil/refine N {}: with fix sph/soil stepping level, N must be a "
                       "multiple of 2^maxlevel = {}, the steps at which all levels are synchronised",
                nevery, 1 << maxlevel);
@@ -261,7 +261,7 @@ void FixSPHSoilRefine::report_parameters()
 void FixSPHSoilRefine::end_of_step()
 {
   // (particles that began at different levels may have a longer period: wait for its multiple)
-  if (schedule && schedule->per_level && update->ntimestep % schedule->largest_period != 0) return;
+  if (schedule->per_level && update->ntimestep % schedule->largest_period != 0) return;
 
   last_split_step = update->ntimestep;
   last_split = 0;
@@ -539,7 +539,7 @@ void FixSPHSoilRefine::merge()
   next_reneighbor = update->ntimestep + 1;
   // the smallest h may have grown: with a time step per level, the hierarchy follows now, at
   // the synchronised step (with one global step, the adaptive step follows at the next step)
-  if (schedule && schedule->per_level) integrator->particles_refined(STYLE);
+  if (schedule->per_level) integrator->particles_refined(STYLE);
   total_merged += merged;
   run_merged += merged;
   total_clusters += merger->clusters_merged();

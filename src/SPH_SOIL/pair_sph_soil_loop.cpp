@@ -108,7 +108,7 @@ void PairSPHSoil::pack_step_periods()
   for (int i = 0; i < nall; i++) {
     const int period = atom_periods[i];
     step_periods[i] = period == 0 ? -INFINITY
-                                  : (SPHSoil::ends_step_pow2(now, period) ? (double) period : -(double) period);
+                                  : (SPHSoil::ends_step(now, period) ? (double) period : -(double) period);
   }
 }
 
@@ -392,10 +392,7 @@ void PairSPHSoil::eval()
     for (int k = 0; k < plain_count; k++) {
       const int j = plain_partners[k];
       double weight = 1.0;
-      if (LEVELS) {
-        const double period_j = std::fabs(periods[j]);
-        weight = unsigned_period_i < period_j ? unsigned_period_i : period_j;
-      }
+      if (LEVELS) weight = SPHSoil::finer_period(unsigned_period_i, periods[j]);
       const double *pj = in + (size_t) j * SPHSoil::PACKED;
       PairGeometry g;
       if (!pair_geometry<D, Kernel>(xi, hi, pj, g)) continue;

@@ -50,10 +50,10 @@ inline int step_period(double h, double finest_h)
   return 1 << std::min(std::max(exponent, 0), MAX_PERIOD_EXPONENT);
 }
 
-// whether a step of period n ends at LAMMPS step `step`
+// whether a step of period n (a power of two) ends at LAMMPS step `step`: a multiple of n
 inline bool ends_step(int64_t step, int period)
 {
-  return step % period == 0;
+  return (step & (int64_t) (period - 1)) == 0;
 }
 
 // a step that begins at LAMMPS step `begin` ends at the next multiple of the period
@@ -62,29 +62,20 @@ inline int64_t step_end(int64_t begin, int period)
   return (begin / period + 1) * period;
 }
 
-// whether a step of period n (a power of two) ends at LAMMPS step `step`, without a division
-inline bool ends_step_pow2(int64_t step, int period)
-{
-  return (step & (int64_t) (period - 1)) == 0;
-}
-
 // A pair's weight in the pair loop, from its two particles' signed periods (+n when the
 // particle ends a step now, -n when not; a wall particle -INFINITY: it takes its partner's):
-// 0 when neither ends a step (the pair is skipped), else the finer period. (Comparisons, not
-// std::fmin: this is the pair loop's, and fmin may be a library call.)
+// 0 when neither ends a step (the pair is skipped), else the finer period; finer_period() the
+// latter from i's unsigned period. (Comparisons, not std::fmin: this is the pair loop's, and
+// fmin may be a library call.)
+inline double finer_period(double period_i, double signed_period_j)
+{
+  const double period_j = signed_period_j < 0.0 ? -signed_period_j : signed_period_j;
+  return period_i < period_j ? period_i : period_j;
+}
 inline double pair_step_weight(double signed_period_i, double signed_period_j)
 {
   if (signed_period_i < 0.0 && signed_period_j < 0.0) return 0.0;
-  const double a = signed_period_i < 0.0 ? -signed_period_i : signed_period_i;
-  const double b = signed_period_j < 0.0 ? -signed_period_j : signed_period_j;
-  return a < b ? a : b;
-}
-
-// The ideal speed-up of stepping per level over one global step, from the particles' periods:
-// N / sum_i 1/n_i (each particle costs one evaluation per own step)
-inline double ideal_speedup(double particles, double sum_inverse_periods)
-{
-  return sum_inverse_periods > 0.0 ? particles / sum_inverse_periods : 1.0;
+  return finer_period(signed_period_i < 0.0 ? -signed_period_i : signed_period_i, signed_period_j);
 }
 
 }    // namespace SPHSoil

@@ -7,6 +7,7 @@
 #include "core.h"
 #include "exceptions.h"
 
+#include <cmath>
 #include <map>
 #include <mpi.h>
 #include <string>
@@ -157,6 +158,22 @@ inline std::map<LAMMPS_NS::tagint, std::vector<double>> gather_state(LAMMPS_NS::
   for (size_t k = 0; k < total; k += nvalues + 1)
     state[(LAMMPS_NS::tagint) all[k]] = std::vector<double>(all.begin() + k + 1, all.begin() + k + 1 + nvalues);
   return state;
+}
+
+// Every value of every atom of `state` (gather_state()) within `relative` of the `reference`'s
+// plus `absolute` (the round-off of a change of summation order, or of a scheme's variant)
+inline void expect_same_state(const std::map<LAMMPS_NS::tagint, std::vector<double>> &state,
+                              const std::map<LAMMPS_NS::tagint, std::vector<double>> &reference,
+                              double relative, double absolute)
+{
+  ASSERT_EQ(state.size(), reference.size());
+  const auto &names = state_names();
+  for (const auto &entry : reference) {
+    const auto &s = state.at(entry.first);
+    for (size_t k = 1; k < names.size(); k++)
+      ASSERT_NEAR(s[k], entry.second[k], relative * std::fabs(entry.second[k]) + absolute)
+          << "atom " << entry.first << " " << names[k];
+  }
 }
 
 }    // namespace SPHSoilTesting
