@@ -3,7 +3,7 @@
 sph/taitwater and smd/ulsph on the same 2D layout (in.bench_*), as ratios from one run.
 
     bench/benchmark.py [--lmp build/lmp] [--repeat 1] [--json FILE] [--bars] [--callgrind] [--parallel]
-                       [--refinement] [--levels]
+                       [--refinement] [--levels] [--showcases [--run-showcases]]
 
 Each input runs on 1 MPI rank; the best of --repeat runs counts, the styles taking turns. --bars also times the short
 aluminium-bar example on all cores. --callgrind adds instructions per particle-step of each style, counted by
@@ -18,7 +18,9 @@ coarse and the statically refined (fine) lattice (callgrind, 40 steps minus 0: w
 free of the load of the machine), and the cost figures of the latest refinement comparison (doc/
 refinement_comparison.json, written by python3 -m sph_soil refinement, an hour on 2 cores: not rerun here): each run's wall
 time per particle-step against the coarse run's, its wall time against its fine run's and its surface RMS from that
-run against the coarse run's. Prints JSON. lmp runs through the tools' runner (tools/sph_soil/runner.py):
+run against the coarse run's. --showcases adds every refinement showcase's answer and cost against its uniform
+run at the finest spacing (doc/showcases.json, written by python3 -m sph_soil showcase: hours on 2 cores, so read,
+not rerun; --run-showcases runs the configurations missing from its work directory first). Prints JSON. lmp runs through the tools' runner (tools/sph_soil/runner.py):
 --lmp, else $SPH_SOIL_LMP, else lmp of the build directory of SPH_SOIL_LAMMPS.
 """
 import argparse
@@ -129,6 +131,22 @@ def comparison_costs():
     return out
 
 
+def showcases(lmp, run_missing):
+    """The refinement showcases (python3 -m sph_soil showcase): each configuration's answer, wall time
+    and cost against the uniform run at the finest spacing; with run_missing, the configurations not
+    yet run are run first (hours)."""
+    if run_missing:
+        subprocess.run([sys.executable, '-m', 'sph_soil', 'showcase', '--run', '--lmp', lmp.binary], check=True,
+                       cwd=os.path.join(ROOT, 'tools'), env=dict(os.environ, PYTHONPATH=os.path.join(ROOT, 'tools')),
+                       stdout=subprocess.DEVNULL)
+    path = os.path.join(ROOT, 'doc', 'showcases.json')
+    if not os.path.exists(path):
+        return {}
+    with open(path) as f:
+        return {'showcases': json.load(f), 'note': 'from doc/showcases.json (python3 -m sph_soil showcase, '
+                                                    '2 ranks, one batch)'}
+
+
 def refinement_costs(lmp, work):
     """Instructions per particle-step of the bars, coarse and fine (examples/refinement/in.refinement -var steps N),
     and the latest comparison's figures (comparison_costs())."""
@@ -206,6 +224,10 @@ def main():
                         'add the latest refinement comparison\'s cost figures')
     p.add_argument('--levels', action='store_true',
                    help='also measure a time step per level against one global step on two refined layouts')
+    p.add_argument('--showcases', action='store_true',
+                   help='also report the refinement showcases\' cost and accuracy (doc/showcases.json)')
+    p.add_argument('--run-showcases', action='store_true',
+                   help='with --showcases: run the showcases\' missing configurations first (hours)')
     a = p.parse_args()
     lmp = Lammps(a.lmp).require()
 
@@ -256,6 +278,8 @@ def main():
             results['refinement'] = refinement_costs(lmp, work)
         if a.levels:
             results['level_stepping'] = level_stepping(lmp, work, a.repeat)
+        if a.showcases:
+            results['showcases'] = showcases(lmp, a.run_showcases)
 
     ours = results['sph_soil']['particle_steps_per_second_per_core']
     summary = {

@@ -19,3 +19,14 @@ def bisect(run, low, high, steps, tool):
         else:
             low = middle
     return runs, low, high
+
+
+def summary(runs, low, high, quantity):
+    """The result of bisect() in a study's JSON (the same keys for every study, which
+    python3 -m sph_soil showcase reads): the critical value of `quantity` as the final bracket's
+    middle +- its half width, the wall time of all runs, and every run without its time series."""
+    return {'quantity': quantity, 'stands_up_to': low, 'fails_from': high, 'critical': 0.5 * (low + high),
+            'half_width': 0.5 * (high - low),
+            'wall_seconds_all_runs': round(sum(r['wall_seconds'] or 0.0 for r in runs), 1),
+            'runs': [{k: v for k, v in r.items() if k not in ('time', 'moved')}
+                     for r in sorted(runs, key=lambda r: r[quantity])]}

@@ -13,6 +13,7 @@ for a binary copied away from its build) plus Open MPI's permission to run as ro
 machines of this project need, and LAMMPS_POTENTIALS pointing at the checkout's potentials/,
 where the examples' material files are (inputs run from scratch directories find them there).
 """
+import glob
 import os
 import subprocess
 import time
@@ -83,8 +84,10 @@ class Lammps:
 
     def run(self, infile, directory, np=1, variables=(), log='log.lammps', screen='none', extra=(),
             prefix=(), check=False, stdout=None, stderr=None, timeout=None):
-        """Run in `directory` (made if missing); check=True raises CalledProcessError on failure."""
+        """Run in `directory` (made if missing), with the files the input reads beside it linked
+        in (link_inputs); check=True raises CalledProcessError on failure."""
         os.makedirs(directory, exist_ok=True)
+        link_inputs(infile, directory)
         cmd = self.command(infile, np, variables, log, screen, extra, prefix)
         start = time.time()
         done = subprocess.run(cmd, cwd=directory, env=environment(), stdout=stdout, stderr=stderr,
@@ -99,6 +102,25 @@ class Lammps:
         """What `lmp -h` prints."""
         return subprocess.run([self.binary, '-h'], capture_output=True, text=True,
                               env=environment()).stdout
+
+
+# the files an input reads from its own directory (LAMMPS reads them from the working directory):
+# data files, surfaces for create_atoms mesh, files it includes
+INPUT_FILES = ('data.*', '*.stl', '*.lmp')
+
+
+def link_inputs(infile, directory):
+    """Symbolic links in `directory` to the files beside `infile` that it may read (INPUT_FILES),
+    so that an example runs in a scratch directory as in its own."""
+    source = os.path.dirname(os.path.abspath(infile))
+    if os.path.abspath(directory) == source:
+        return
+    for pattern in INPUT_FILES:
+        for path in glob.glob(os.path.join(source, pattern)):
+            target = os.path.join(directory, os.path.basename(path))
+            if os.path.lexists(target):
+                os.remove(target)
+            os.symlink(path, target)
 
 
 def add_lmp_argument(parser):

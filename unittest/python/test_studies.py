@@ -174,3 +174,58 @@ def test_levels_names_are_those_in_refinement_gives(lmp, tmp_path):
         result = lmp.run(refinement.INPUT, str(tmp_path), variables=list(variables) + [('steps', '0')],
                          log='log.test', check=True)
         assert Log(result.log).search(r'^refinement: run (\S+) ', re.M).group(1) == name
+
+
+def test_bisection_summary_and_refinement_options():
+    """The bisection's result in the keys every study writes (and showcase reads), and the
+    refinement options' input variables and directory tags."""
+    from sph_soil import bisection, refine_options
+    runs = [{'F': 1.5, 'fails': True, 'wall_seconds': 2.0, 'time': [0.0]},
+            {'F': 1.0, 'fails': False, 'wall_seconds': 1.0, 'moved': [0.0]},
+            {'F': 1.25, 'fails': False, 'wall_seconds': None}]
+    s = bisection.summary(runs, 1.25, 1.5, 'F')
+    assert (s['critical'], s['half_width'], s['wall_seconds_all_runs']) == (1.375, 0.125, 3.0)
+    assert [r['F'] for r in s['runs']] == [1.0, 1.25, 1.5] and 'time' not in s['runs'][2]
+    p = cli.parser()
+    args = p.parse_args(['strength-reduction', '--d', '0.5', '--refine', '2', '--stepping', 'level', '--balance'])
+    assert refine_options.variables(args) == [('refine', '2'), ('stepping', 'level'), ('criterion', 'strain'),
+                                              ('check', '16'), ('balance', '1')]
+    assert refine_options.tag(args) == '_refined2_level_balanced'
+    assert refine_options.summary(args, 0.5)['finest_spacing_m'] == 0.125
+    args = p.parse_args(['vertical-cut', '--refine', '--every', '48'])
+    assert refine_options.tag(args) == '_refined_N48' and refine_options.title(args) == ', refined once'
+    assert refine_options.variables(p.parse_args(['vertical-cut'])) == [('refine', '0')]
+
+
+def test_showcase_compares_with_the_finest_uniform_run(tmp_path):
+    """Each configuration against the finest uniform one: cost ratio, and 'within' the difference
+    between the two finest uniform runs; the JSON, table and plot are written."""
+    from sph_soil.studies import showcase
+    work = tmp_path / 'work' / 'slope'
+    work.mkdir(parents=True)
+
+    def result(name, spacing, refined, low, high, seconds):
+        r = {'spacing_m': spacing, 'finest_spacing_m': spacing / 2 ** refined, 'refined': refined,
+             'stepping': 'level' if refined else None, 'stands_up_to': low, 'fails_from': high,
+             'critical': 0.5 * (low + high), 'half_width': 0.5 * (high - low), 'wall_seconds_all_runs': seconds}
+        (work / f'{name}.json').write_text(json.dumps(r))
+    result('u05', 0.5, 0, 1.375, 1.4375, 10.0)
+    result('u025', 0.25, 0, 1.375, 1.40625, 100.0)
+    result('u0125', 0.125, 0, 1.40625, 1.4375, 1000.0)
+    result('l2_level', 0.5, 2, 1.40625, 1.4375, 150.0)
+    result('l1_from05_level', 0.5, 1, 1.4375, 1.5, 50.0)
+    doc = tmp_path / 'doc'
+    cli.main(['showcase', 'slope', '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])
+    summary = json.loads((doc / 'showcases.json').read_text())['slope']
+    rows = {r['name']: r for r in summary['configurations']}
+    assert summary['finest_uniform'] == 'u0125' and summary['tolerance'] == pytest.approx(0.03125)
+    assert rows['l2_level']['cost_over_finest_uniform'] == 0.15 and rows['l2_level']['within_tolerance']
+    assert not rows['l1_from05_level']['within_tolerance'] and rows['u025']['within_tolerance']
+    # the maxlevel-1 run against the uniform run at its finest spacing (0.25 m)
+    assert rows['l1_from05_level']['difference_from_uniform_at_its_spacing'] == pytest.approx(0.078125, abs=1e-5)
+    assert rows['l1_from05_level']['cost_over_uniform_at_its_spacing'] == 0.5
+    assert rows['u025']['cost_over_uniform_at_its_spacing'] is None
+    assert 'maxlevel 2 from 0.5 m' in (doc / 'showcases.rst').read_text()
+    assert (doc / 'img' / 'showcase_slope.png').stat().st_size > 0
+    with pytest.raises(SystemExit, match='unknown footing'):
+        cli.main(['showcase', 'footing', '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])

@@ -14,7 +14,9 @@ JSON, so another threshold can be applied to the same runs. Prints JSON, writes 
 (--plot) of the monitored displacement against time for every run.
 
   python3 -m sph_soil strength-reduction [--input examples/slope/in.slope] [--lmp build/lmp] [--np 2]
-                              [--var d 0.5] [--low 1.0] [--high 2.0] [--steps 4]
+                              [--d 0.5] [--var NAME VALUE] [--low 1.0] [--high 2.0] [--steps 4]
+                              [--refine [N]] [--stepping global|level] [--criterion strain|shear_strain_rate]
+                              [--threshold T] [--every N] [--balance]
                               [--data slope.dat] [--length 10] [--creep 0.001] [--late 0.3]
                               [--reference 1.4] [--workdir /tmp/sph_soil_strength_reduction]
                               [--json examples/slope/slope.json] [--plot examples/slope/slope.png]
@@ -23,13 +25,13 @@ import os
 
 import numpy as np
 
-from .. import analysis, paths, report, runner
-from ..bisection import bisect
+from .. import analysis, bisection, paths, refine_options, report, runner
 from ..dumps import read_ave_time
 
 COMMAND = 'strength-reduction'
 DATA, LENGTH, CREEP, LATE = 'slope.dat', 10.0, 0.001, 0.3     # examples/slope's monitor and criterion
 REFERENCE = 1.4     # the published factor of safety (Griffiths & Lane 1999, example 1)
+SPACING, CHECK = 0.5, 16    # examples/slope's default spacing (m) and refinement check interval
 
 
 def measure(directory, factor, data=DATA, length=LENGTH, creep=CREEP, late=LATE, seconds=None):
@@ -44,10 +46,11 @@ def measure(directory, factor, data=DATA, length=LENGTH, creep=CREEP, late=LATE,
 
 
 def run(lmp, args, factor):
-    tag = ''.join(f'{name}{value}_' for name, value in args.var)
+    tag = f'd{args.d:g}{refine_options.tag(args)}_' + ''.join(f'{name}{value}_' for name, value in args.var)
     directory = os.path.join(args.workdir, f'{tag}F{factor:.4f}')
     done = lmp.run(os.path.abspath(args.input), directory, np=args.np, check=True,
-                   variables=[('F', f'{factor:.6g}')] + [tuple(v) for v in args.var])
+                   variables=[('F', f'{factor:.6g}'), ('d', f'{args.d:g}')] + refine_options.variables(args) +
+                   [tuple(v) for v in args.var])
     return measure(directory, factor, args.data, args.length, args.creep, args.late, done.seconds)
 
 
@@ -79,11 +82,13 @@ def report_example(directory, log, variables, seconds):
 def add_arguments(p):
     runner.add_arguments(p)
     p.add_argument('--input', default=paths.example_input('slope'))
+    p.add_argument('--d', type=float, default=SPACING, help='the particle spacing (m; the input\'s -var d)')
     p.add_argument('--var', nargs=2, action='append', default=[], metavar=('NAME', 'VALUE'),
-                   help='another LAMMPS variable for every run (e.g. --var d 0.25)')
+                   help='another LAMMPS variable for every run (e.g. --var tend 20)')
     p.add_argument('--low', type=float, default=1.0)
     p.add_argument('--high', type=float, default=2.0)
     p.add_argument('--steps', type=int, default=4)
+    refine_options.add_arguments(p, every=CHECK)
     p.add_argument('--data', default=DATA)
     p.add_argument('--length', type=float, default=LENGTH, help='the length the creep threshold refers to (m)')
     p.add_argument('--creep', type=float, default=CREEP)
@@ -97,19 +102,17 @@ def add_arguments(p):
 
 def main(args):
     lmp = runner.from_arguments(args)
-    runs, lo, hi = bisect(lambda factor: run(lmp, args, factor), args.low, args.high, args.steps,
-                          'strength_reduction')
-    factor = 0.5 * (lo + hi)
-    result = {
+    runs, lo, hi = bisection.bisect(lambda factor: run(lmp, args, factor), args.low, args.high, args.steps,
+                                    'strength_reduction')
+    result = bisection.summary(runs, lo, hi, 'F')
+    factor = result['critical']
+    report.write_json({
         'input': os.path.relpath(os.path.abspath(args.input), paths.ROOT), 'variables': dict(args.var),
+        **refine_options.summary(args, args.d),
         'criterion': f'fails when the monitored displacement grows by more than {args.creep:g} x '
                      f'{args.length:g} m over the last {100 * args.late:.0f}% of the run',
-        'factor_of_safety': round(factor, 4), 'uncertainty': round(0.5 * (hi - lo), 4),
-        'reference': args.reference, 'ratio_to_reference': round(factor / args.reference, 4),
-        'wall_seconds': round(sum(r['wall_seconds'] for r in runs), 1),
-        'runs': [{k: v for k, v in r.items() if k not in ('time', 'moved')} for r in sorted(runs, key=lambda r: r['F'])],
-    }
-    report.write_json(result, args.json, indent=2)
+        **result, 'reference': args.reference, 'ratio_to_reference': round(factor / args.reference, 4),
+    }, args.json, indent=2)
     if args.plot:
-        plot(runs, f'strength reduction: F = {factor:.3f} +- {0.5 * (hi - lo):.3f} '
-                   f'(reference {args.reference:g})', args.plot)
+        plot(runs, f'strength reduction, d = {args.d:g} m{refine_options.title(args)}: F = {factor:.3f} '
+                   f'+- {result["half_width"]:.3f} (reference {args.reference:g})', args.plot)

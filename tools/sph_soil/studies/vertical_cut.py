@@ -23,8 +23,7 @@ import os
 
 import numpy as np
 
-from .. import analysis, paths, report, runner
-from ..bisection import bisect
+from .. import analysis, bisection, paths, refine_options, report, runner
 from ..dumps import read_ave_time
 from ..logs import Log
 
@@ -48,35 +47,10 @@ def measure(directory, ratio, creep=CREEP, seconds=None, log='log.lammps'):
             'time': data[:, 1].tolist(), 'moved': data[:, 2].tolist()}
 
 
-def refinement_variables(args):
-    """The input's refinement variables of the command line (none without --refine)."""
-    if not args.refine:
-        return [('refine', '0')]
-    return [('refine', str(args.refine)), ('stepping', args.stepping), ('criterion', args.criterion),
-            ('check', str(args.every)), ('balance', '1' if args.balance else '0')] + \
-        ([('threshold', f'{args.threshold:g}')] if args.threshold is not None else [])
-
-
-def tag(args):
-    """The runs' directory tag of a configuration: d, levels, stepping, criterion."""
-    if not args.refine:
-        return f'd{args.d:g}'
-    t = f'd{args.d:g}_refined' + (f'{args.refine}' if args.refine > 1 else '')
-    if args.stepping != 'global':
-        t += f'_{args.stepping}'
-    if args.criterion != 'strain' or args.threshold is not None:
-        t += f'_{args.criterion}' + (f'{args.threshold:g}' if args.threshold is not None else '')
-    if args.every != 10:
-        t += f'_N{args.every}'
-    if args.balance:
-        t += '_balanced'
-    return t
-
-
 def run(lmp, args, ratio):
-    directory = os.path.join(args.workdir, f'{tag(args)}_ratio{ratio:.4f}')
+    directory = os.path.join(args.workdir, f'd{args.d:g}{refine_options.tag(args)}_ratio{ratio:.4f}')
     done = lmp.run(EXAMPLE, directory, np=args.np, check=True,
-                   variables=[('ratio', f'{ratio:.6g}'), ('d', f'{args.d:g}')] + refinement_variables(args))
+                   variables=[('ratio', f'{ratio:.6g}'), ('d', f'{args.d:g}')] + refine_options.variables(args))
     return measure(directory, ratio, args.creep, done.seconds)
 
 
@@ -115,20 +89,7 @@ def add_arguments(p):
     p.add_argument('--steps', type=int, default=4)
     p.add_argument('--creep', type=float, default=CREEP,
                    help='failure: the crest moves more than this times H over the last 30%% of the run')
-    p.add_argument('--refine', type=int, nargs='?', const=1, default=0,
-                   help='dynamic refinement (-var refine N, N levels deep; 1 without a value): the '
-                        'particles that shear split')
-    p.add_argument('--stepping', choices=('global', 'level'), default='global',
-                   help='with --refine: one time step for all, or a time step per level')
-    p.add_argument('--criterion', choices=('strain', 'shear_strain_rate'), default='strain',
-                   help='with --refine: what splits (the input\'s -var criterion)')
-    p.add_argument('--every', type=int, default=10,
-                   help='with --refine: check every N steps (the input rounds it up to a multiple of 2^N '
-                        'with --stepping level)')
-    p.add_argument('--balance', action='store_true',
-                   help='with --refine: balance the ranks\' work (fix balance weighted by step_period)')
-    p.add_argument('--threshold', type=float, default=None,
-                   help='with --refine: the criterion\'s threshold (the input\'s default without it)')
+    refine_options.add_arguments(p, every=10)
     p.add_argument('--workdir', default='/tmp/sph_soil_vertical_cut')
     p.add_argument('--json')
     p.add_argument('--plot')
@@ -136,21 +97,13 @@ def add_arguments(p):
 
 def main(args):
     lmp = runner.from_arguments(args)
-    runs, low, high = bisect(lambda ratio: run(lmp, args, ratio), args.low, args.high, args.steps,
-                             'vertical_cut')
-    critical = 0.5 * (low + high)
-    summary = {'spacing_m': args.d, 'refined': args.refine, 'stepping': args.stepping if args.refine else None,
-               'criterion': args.criterion if args.refine else None, 'threshold': args.threshold,
-               'every': args.every if args.refine else None, 'balanced': bool(args.refine and args.balance),
-               'wall_seconds_all_runs': round(sum(r['wall_seconds'] or 0.0 for r in runs), 1),
-               'late_creep_threshold_over_H': args.creep,
-               'stands_up_to': low, 'fails_from': high, 'critical_ratio': critical,
-               'half_width': 0.5 * (high - low), 'pastor_2000': PASTOR,
-               'critical_over_reference': critical / (0.5 * sum(PASTOR)),
-               'runs': [{k: v for k, v in r.items() if k not in ('time', 'moved')} for r in runs]}
+    runs, low, high = bisection.bisect(lambda ratio: run(lmp, args, ratio), args.low, args.high, args.steps,
+                                       'vertical_cut')
+    result = bisection.summary(runs, low, high, 'ratio')
+    critical = result['critical']
+    summary = {**refine_options.summary(args, args.d), 'late_creep_threshold_over_H': args.creep, **result,
+               'pastor_2000': PASTOR, 'critical_over_reference': critical / (0.5 * sum(PASTOR))}
     report.write_json(summary, args.json, indent=1, end='')
     if args.plot:
-        refined = (f', refined {"once" if args.refine == 1 else f"{args.refine} levels"}'
-                   f'{", a step per level" if args.stepping == "level" else ""}' if args.refine else '')
-        plot(runs, f'Vertical cut, phi = 0, d = {100 * args.d:g} cm{refined}: critical gamma H / c = {critical:.2f} '
-                   f'+- {0.5 * (high - low):.2f} (Pastor 2000: 3.78)', args.plot)
+        plot(runs, f'Vertical cut, phi = 0, d = {100 * args.d:g} cm{refine_options.title(args)}: critical '
+                   f'gamma H / c = {critical:.2f} +- {result["half_width"]:.2f} (Pastor 2000: 3.78)', args.plot)

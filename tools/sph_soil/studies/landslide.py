@@ -1,0 +1,110 @@
+"""A 3D landslide over terrain (examples/landslide_3d): the deposit of a finished run, measured
+from its final dump so that refinement does not move the measures (a split keeps the volume
+where it was, not the topmost particle):
+
+  - runout_m: the x that 99% of the soil's volume lies behind (the front, without stragglers);
+  - deposit_height_m: the largest thickness of the deposit, the soil's volume (mass / rho0) in a
+    column of cell x cell over the ground divided by the cell's area (cell: twice the coarse
+    spacing), on the valley floor (beyond the hillside's toe);
+  - deposit_volume_fraction_on_floor: the share of the soil's volume beyond the toe.
+
+Writes JSON and a plot: the deposit's thickness seen from above, and the front against time
+(landslide.dat).
+
+  python3 -m sph_soil landslide [--dir examples/landslide_3d] [--json FILE] [--plot FILE]
+"""
+import os
+import re
+
+import numpy as np
+
+from .. import logs, paths, report
+from ..dumps import read_ave_time, read_dump
+
+COMMAND = 'landslide'
+DUMP = 'dump.landslide_3d.final'
+RHO0 = 1850.0       # in.landslide_3d's soil density (kg/m^3)
+
+
+def terrain(directory):
+    """The terrain's toe and extent, from the terrain.lmp beside the run (the include file)."""
+    with open(os.path.join(directory, 'terrain.lmp')) as f:
+        text = f.read()
+    return {name: float(re.search(rf'variable\s+terrain_{name}\s+equal\s+(\S+)', text).group(1))
+            for name in ('xlo', 'xhi', 'ylo', 'yhi', 'toe')}
+
+
+def deposit(s, spacing, toe):
+    """The measures of the module's docstring from a final dump `s` (read_dump)."""
+    volume = s['mass'] / RHO0
+    order = np.argsort(s['x'])
+    cumulative = np.cumsum(volume[order]) / volume.sum()
+    runout = float(s['x'][order][np.searchsorted(cumulative, 0.99)])
+    cell = 2.0 * spacing
+    floor = s['x'] > toe
+    ix = np.floor(s['x'][floor] / cell).astype(int)
+    iy = np.floor(s['y'][floor] / cell).astype(int)
+    columns = {}
+    for a, b, v in zip(ix, iy, volume[floor]):
+        columns[(a, b)] = columns.get((a, b), 0.0) + v
+    height = max(columns.values()) / cell ** 2 if columns else 0.0
+    return {'runout_m': round(runout, 4), 'deposit_height_m': round(height, 4),
+            'deposit_volume_fraction_on_floor': round(float(volume[floor].sum() / volume.sum()), 4),
+            'soil_particles': int(len(volume)), 'deepest_level': int(s['c_soil'].max())}
+
+
+def measure(directory, spacing=None):
+    log = logs.Log(os.path.join(directory, 'log.lammps'))
+    if spacing is None:
+        spacing = float(log.search(r'Lattice spacing in x,y,z = (\S+)').group(1))
+    s = read_dump(os.path.join(directory, DUMP))
+    out = {'spacing_m': spacing, **deposit(s, spacing, terrain(directory)['toe'])}
+    return out, s
+
+
+def plot(summary, s, history, toe, out):
+    plt = report.pyplot()
+    fig, (top, front) = plt.subplots(1, 2, figsize=(11, 4), gridspec_kw={'width_ratios': [2.2, 1]})
+    order = np.argsort(s['z'])
+    sc = top.scatter(s['x'][order], s['y'][order], c=s['v_height'][order], s=2.0, cmap='viridis',
+                     rasterized=True)
+    fig.colorbar(sc, ax=top, label='height above the ground (m)')
+    top.axvline(toe, color='0.5', ls=':', lw=0.8, label='toe of the hillside')
+    top.axvline(summary['runout_m'], color='r', ls='--', lw=0.8, label='runout (99% of the volume)')
+    top.set_aspect('equal')
+    top.set_xlabel('x (m)')
+    top.set_ylabel('y (m)')
+    top.legend(fontsize=7, loc='upper left')
+    top.set_title(f"deposit, d = {100 * summary['spacing_m']:g} cm: runout {summary['runout_m']:.2f} m, "
+                  f"thickness {summary['deposit_height_m']:.2f} m", fontsize=9)
+    if history is not None:
+        front.plot(history[:, 1], history[:, 2], 'k-', lw=1.0)
+    front.set_xlabel('time (s)')
+    front.set_ylabel('front: largest x of the soil (m)')
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+
+
+def landslide(directory, json_path=None, plot_path=None, wall_seconds=None):
+    summary, s = measure(directory)
+    summary['wall_seconds'] = wall_seconds if wall_seconds is not None else logs.wall_seconds(directory)
+    report.write_json(summary, json_path, indent=2)
+    if plot_path:
+        data = os.path.join(directory, 'landslide.dat')
+        history = read_ave_time(data) if os.path.exists(data) else None
+        plot(summary, s, history, terrain(directory)['toe'], plot_path)
+    return summary
+
+
+def report_example(directory, log, variables, seconds):
+    """run_example's numbers and plot: landslide_3d.json, landslide_3d.png."""
+    landslide(directory, os.path.join(directory, 'landslide_3d.json'),
+              os.path.join(directory, 'landslide_3d.png'), seconds)
+
+
+def add_arguments(p):
+    report.add_run_arguments(p, paths.example_dir('landslide_3d'), f'{DUMP}, landslide.dat, terrain.lmp')
+
+
+def main(a):
+    landslide(a.dir, a.json, a.plot)

@@ -1,0 +1,212 @@
+"""Refinement showcases: a failure with a narrow shear zone solved coarse, with dynamic refinement
+and uniformly at the finest spacing, each configuration's answer against its cost.
+
+A showcase is a bisection study (vertical-cut: the critical gamma H / c of a vertical cut;
+strength-reduction: the factor of safety of examples/slope) run in several configurations with
+the same bracket: uniform lattices at two or three spacings (their convergence) and dynamic
+refinement (maxlevel 1, 2, 3 from coarser lattices down to the finest uniform spacing, with a
+time step per level or one global step). Each configuration's bisection writes its JSON and
+plot under --workdir/<showcase>/ (name.json, name.png); configurations whose JSON is there are
+not run again (--run runs the missing ones, in the order listed; without --run only the
+existing ones are reported). The report compares every configuration with the finest uniform
+run: its answer, whether it is within the difference between the two finest uniform runs (the
+issue's tolerance: refinement should reach the finest answer as well as that answer is
+converged), and its wall time as a fraction of the finest uniform run's (all runs of the
+bisection, the same machine and rank count).
+
+Writes doc/showcases.json (every showcase reported; bench/benchmark.py --showcases includes it),
+doc/showcases.rst (a table per showcase) and doc/img/showcase_<name>.png (answer against wall
+time, the uniform runs' convergence joined by a line).
+
+  python3 -m sph_soil showcase [vertical-cut slope] [--run] [--lmp build/lmp] [--np 2]
+                               [--workdir /tmp/sph_soil_showcase]
+"""
+import json
+import os
+import sys
+
+from .. import paths, report
+from . import strength_reduction, vertical_cut
+
+COMMAND = 'showcase'
+
+# name, label, the study's command-line options (the showcase's bracket is added)
+SHOWCASES = {
+    'vertical-cut': {
+        'study': vertical_cut, 'bracket': ['--low', '3.5', '--high', '4.5', '--steps', '3'],
+        'title': 'Vertical cut, phi = 0: critical gamma H / c (Pastor et al. 2000: 3.772-3.786)',
+        'quantity': 'critical gamma H / c', 'reference': 0.5 * sum(vertical_cut.PASTOR),
+        'configurations': [
+            ('u5', 'uniform 5 cm', ['--d', '0.05']),
+            ('u25', 'uniform 2.5 cm', ['--d', '0.025']),
+            ('u125', 'uniform 1.25 cm', ['--d', '0.0125']),
+            ('l1_level', 'maxlevel 1 from 2.5 cm, a step per level',
+             ['--d', '0.025', '--refine', '1', '--stepping', 'level', '--every', '48', '--balance']),
+            ('l2_level', 'maxlevel 2 from 5 cm, a step per level',
+             ['--d', '0.05', '--refine', '2', '--stepping', 'level', '--every', '48', '--balance']),
+            ('l2_global', 'maxlevel 2 from 5 cm, one global step',
+             ['--d', '0.05', '--refine', '2', '--every', '48', '--balance']),
+            ('l3_level', 'maxlevel 3 from 10 cm, a step per level',
+             ['--d', '0.1', '--refine', '3', '--stepping', 'level', '--every', '48', '--balance']),
+        ]},
+    'slope': {
+        'study': strength_reduction, 'bracket': ['--low', '1.25', '--high', '1.5', '--steps', '1'],
+        'title': 'Slope (Griffiths & Lane 1999, example 1): factor of safety (their FE: 1.4)',
+        'quantity': 'factor of safety', 'reference': strength_reduction.REFERENCE,
+        'configurations': [
+            ('u05', 'uniform 0.5 m', ['--d', '0.5']),
+            ('l1_from05_level', 'maxlevel 1 from 0.5 m, a step per level',
+             ['--d', '0.5', '--refine', '1', '--stepping', 'level', '--balance']),
+            ('l2_level', 'maxlevel 2 from 0.5 m, a step per level',
+             ['--d', '0.5', '--refine', '2', '--stepping', 'level', '--balance']),
+            ('u025', 'uniform 0.25 m', ['--d', '0.25']),
+            ('u0125', 'uniform 0.125 m', ['--d', '0.125']),
+            ('l2_global', 'maxlevel 2 from 0.5 m, one global step',
+             ['--d', '0.5', '--refine', '2', '--balance']),
+            ('l1_from025_level', 'maxlevel 1 from 0.25 m, a step per level',
+             ['--d', '0.25', '--refine', '1', '--stepping', 'level', '--balance']),
+        ]},
+}
+
+
+def run_configuration(showcase, name, options, args):
+    """One configuration's bisection, in this process (the study's own main)."""
+    from ..cli import parser
+    directory = os.path.join(args.workdir, showcase)
+    os.makedirs(directory, exist_ok=True)
+    spec = SHOWCASES[showcase]
+    argv = [spec['study'].COMMAND, *spec['bracket'], *options, '--np', str(args.np),
+            '--workdir', os.path.join(directory, 'runs'), '--json', os.path.join(directory, f'{name}.json'),
+            '--plot', os.path.join(directory, f'{name}.png')] + (['--lmp', args.lmp] if args.lmp else [])
+    print(f'showcase {showcase}: {name}: python3 -m sph_soil {" ".join(argv)}', file=sys.stderr, flush=True)
+    sub = parser().parse_args(argv)
+    try:
+        sub.main(sub)
+    except SystemExit as e:     # e.g. the bracket does not hold for this configuration: go on
+        print(f'showcase {showcase}: {name} gave no result: {e}', file=sys.stderr, flush=True)
+
+
+def compare(showcase, results):
+    """Every configuration against the finest uniform one. results: name -> its study's JSON."""
+    spec = SHOWCASES[showcase]
+    labels = {name: label for name, label, _ in spec['configurations']}
+    uniform = sorted((r['spacing_m'], name) for name, r in results.items() if not r['refined'])
+    if not uniform:
+        return None
+    finest = results[uniform[0][1]]
+    # the tolerance: the difference between the two finest uniform runs' answers
+    tolerance = abs(finest['critical'] - results[uniform[1][1]]['critical']) if len(uniform) > 1 else None
+    by_spacing = {spacing: results[name] for spacing, name in uniform}
+    rows = []
+    for name, label, _ in spec['configurations']:
+        if name not in results:
+            continue
+        r = results[name]
+        # the uniform run at this configuration's finest spacing, if it was run
+        same = by_spacing.get(r.get('finest_spacing_m', r['spacing_m'])) if r['refined'] else None
+        rows.append({
+            'name': name, 'label': labels[name], 'spacing_m': r['spacing_m'],
+            'finest_spacing_m': r.get('finest_spacing_m', r['spacing_m']), 'refined': r['refined'],
+            'stepping': r.get('stepping'), 'critical': r['critical'], 'half_width': r['half_width'],
+            'stands_up_to': r['stands_up_to'], 'fails_from': r['fails_from'],
+            'wall_seconds': r['wall_seconds_all_runs'],
+            'cost_over_finest_uniform': round(r['wall_seconds_all_runs'] / finest['wall_seconds_all_runs'], 3),
+            'difference_from_finest_uniform': round(r['critical'] - finest['critical'], 5),
+            'within_tolerance': None if tolerance is None else abs(r['critical'] - finest['critical']) <= tolerance + 1e-12,
+            'difference_from_uniform_at_its_spacing': None if same is None else round(r['critical'] - same['critical'], 5),
+            'cost_over_uniform_at_its_spacing':
+                None if same is None else round(r['wall_seconds_all_runs'] / same['wall_seconds_all_runs'], 3),
+        })
+    return {'title': spec['title'], 'quantity': spec['quantity'], 'reference': spec['reference'],
+            'finest_uniform': uniform[0][1], 'finest_uniform_spacing_m': uniform[0][0],
+            'tolerance': tolerance, 'configurations': rows}
+
+
+def figure(showcase, summary, out):
+    """The answer (the bisection's bracket as an error bar) against the wall time of all runs."""
+    plt = report.pyplot()
+    fig, ax = plt.subplots(figsize=(7.5, 4.6))
+    rows = summary['configurations']
+    uniform = sorted((r for r in rows if not r['refined']), key=lambda r: r['wall_seconds'])
+    ax.errorbar([r['wall_seconds'] for r in uniform], [r['critical'] for r in uniform],
+                yerr=[r['half_width'] for r in uniform], color='black', marker='s', capsize=3,
+                label='uniform (convergence)')
+    for r in uniform:
+        ax.annotate(f"{r['spacing_m']:g} m", (r['wall_seconds'], r['critical']), textcoords='offset points',
+                    xytext=(5, 5), fontsize=8)
+    markers = {1: 'o', 2: 'D', 3: '^'}
+    for r in rows:
+        if r['refined']:
+            ax.errorbar([r['wall_seconds']], [r['critical']], yerr=[r['half_width']], capsize=3,
+                        marker=markers.get(r['refined'], 'v'), linestyle='none',
+                        color='tab:red' if r['stepping'] == 'level' else 'tab:blue',
+                        label=f"{r['label']} ({r['cost_over_finest_uniform']:.2f}x)")
+    finest = next(r for r in rows if r['name'] == summary['finest_uniform'])
+    if summary['tolerance']:
+        ax.axhspan(finest['critical'] - summary['tolerance'], finest['critical'] + summary['tolerance'],
+                   color='0.9', zorder=0, label='finest uniform +- its difference from the next')
+    ax.axhline(summary['reference'], color='tab:green', linestyle='--', label=f"published: {summary['reference']:g}")
+    ax.axvline(0.2 * finest['wall_seconds'], color='0.5', linestyle=':', label='0.2x the finest uniform run')
+    ax.set_xscale('log')
+    ax.set_xlabel('wall time of the bisection, all runs (s, 2 ranks)')
+    ax.set_ylabel(summary['quantity'])
+    ax.set_title(summary['title'], fontsize=9)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
+def table(summary):
+    header = ['configuration', 'finest spacing (m)', 'stands up to', 'fails from', 'critical',
+              'from finest uniform', 'within', 'wall (s)', 'cost / finest uniform',
+              'from / cost of uniform at its spacing']
+    rows = [[r['label'], f"{r['finest_spacing_m']:g}", f"{r['stands_up_to']:g}", f"{r['fails_from']:g}",
+             f"{r['critical']:.4g} +- {r['half_width']:.3g}", f"{r['difference_from_finest_uniform']:+.4g}",
+             {True: 'yes', False: 'no', None: '-'}[r['within_tolerance']], f"{r['wall_seconds']:.0f}",
+             f"{r['cost_over_finest_uniform']:.2f}",
+             '-' if r['cost_over_uniform_at_its_spacing'] is None else
+             f"{r['difference_from_uniform_at_its_spacing']:+.4g} / {r['cost_over_uniform_at_its_spacing']:.2f}"]
+            for r in summary['configurations']]
+    return report.rst_table(header, rows)
+
+
+def add_arguments(p):
+    p.add_argument('showcases', nargs='*', metavar='SHOWCASE',
+                   help=f'the showcases ({", ".join(SHOWCASES)}; default: all)')
+    p.add_argument('--run', action='store_true', help='run the configurations whose JSON is missing')
+    p.add_argument('--lmp', default=None, help='the LAMMPS executable of the runs')
+    p.add_argument('--np', type=int, default=2)
+    p.add_argument('--workdir', default='/tmp/sph_soil_showcase')
+    p.add_argument('--doc', default=paths.DOC, help='where showcases.json, showcases.rst and img/ go')
+
+
+def main(args):
+    unknown = [s for s in args.showcases if s not in SHOWCASES]
+    if unknown:
+        raise SystemExit(f'showcase: unknown {", ".join(unknown)} (known: {", ".join(SHOWCASES)})')
+    summaries = {}
+    for showcase in args.showcases or list(SHOWCASES):
+        directory = os.path.join(args.workdir, showcase)
+        results = {}
+        for name, _, options in SHOWCASES[showcase]['configurations']:
+            path = os.path.join(directory, f'{name}.json')
+            if not os.path.exists(path) and args.run:
+                run_configuration(showcase, name, options, args)
+            if os.path.exists(path):
+                with open(path) as f:
+                    results[name] = json.load(f)
+        summaries[showcase] = compare(showcase, results)
+    summaries = {k: v for k, v in summaries.items() if v}
+    os.makedirs(os.path.join(args.doc, 'img'), exist_ok=True)
+    report.write_json(summaries, os.path.join(args.doc, 'showcases.json'), indent=1)
+    page = ['Refinement showcases (generated)', '=' * 32, '',
+            'Written by ``python3 -m sph_soil showcase`` (tools/sph_soil/studies/showcase.py): each failure bisected',
+            'coarse, with dynamic refinement and uniformly at the finest spacing, on 2 ranks of the same machine in one',
+            'batch. "within": the answer is within the difference between the two finest uniform runs of the finest',
+            'one\'s; wall: all runs of the bisection.', '']
+    for showcase, summary in summaries.items():
+        figure(showcase, summary, os.path.join(args.doc, 'img', f'showcase_{showcase}.png'))
+        page += [summary['title'], '"' * len(summary['title']), '', table(summary), '',
+                 f'.. image:: img/showcase_{showcase}.png', '   :width: 90%', '']
+    with open(os.path.join(args.doc, 'showcases.rst'), 'w') as f:
+        f.write('\n'.join(page))
