@@ -127,3 +127,25 @@ TEST(RefineError, WendlandKernelErrorVanishesForCoincidingDaughtersAndIsPositive
   EXPECT_GT(e, 1e-3);
   EXPECT_NE(e, kernel_gradient_error(2, 0.5, 0.5, 1.2, Case::UNREFINED).value);
 }
+
+// What a split does to a soil at rest (doc/theory.rst 5.11): the stress-balance defect, against
+// an independent sum over the lattice (numpy; the cubic spline, 2D, r_a = 1.2)
+TEST(RefineError, SplitStressDefectAgainstAnIndependentLatticeSum)
+{
+  // daughters on the parent's site with its h: the lattice is unchanged
+  SplitStressDefect none = split_stress_defect(2, 0.0, 1.0, 1.2);
+  EXPECT_LT(none.neighbours, 1e-12);
+  EXPECT_LT(none.daughters, 1e-12);
+  // the package's default split, and the near-balanced (0.4, 0.9)
+  SplitStressDefect usual = split_stress_defect(2, 0.5, 0.5, 1.2);
+  EXPECT_NEAR(usual.neighbours, 0.233877, 1e-5);
+  EXPECT_NEAR(usual.daughters, 1.067237, 1e-5);
+  SplitStressDefect balanced = split_stress_defect(2, 0.4, 0.9, 1.2);
+  EXPECT_NEAR(balanced.neighbours, 0.005113, 1e-5);
+  EXPECT_NEAR(balanced.daughters, 0.009034, 1e-5);
+  // 3D: zero for coinciding daughters, of the same order otherwise
+  EXPECT_LT(split_stress_defect(3, 0.0, 1.0, 1.2).neighbours, 1e-12);
+  SplitStressDefect cube = split_stress_defect(3, 0.5, 0.5, 1.2);
+  EXPECT_GT(cube.neighbours, 0.05);
+  EXPECT_GT(cube.daughters, cube.neighbours);
+}

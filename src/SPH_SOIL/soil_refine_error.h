@@ -50,6 +50,20 @@ double gradient_difference_squared(int dimension, double separation, double smoo
                                    double r_a, NeighbourSmoothing neighbours, const double *x,
                                    KernelKind kernel = KernelKind());
 
+// What a split does to a soil at rest (doc/theory.rst 5.11): in a uniform isotropic stress
+// -p the momentum equation's sum form, a_i = -(2 p / rho) sum_j V_j grad_i W(r_ij, h_ij) with
+// h_ij = (h_i + h_j)/2, vanishes at every particle of a regular lattice (square or cubic, spacing
+// d_p = 1, h_p = r_a); after one particle is split it does not. The largest acceleration that
+// appears at the parent's coarse neighbours and at the daughters, in units of p / (rho h_p):
+// with the geostatic p = rho g z it is that number times (z / h_p) g, the kick of a split at
+// depth z.
+struct SplitStressDefect {
+  double neighbours;    // the coarse particles around the split
+  double daughters;     // the daughters (against the parent's 0)
+};
+SplitStressDefect split_stress_defect(int dimension, double separation, double smoothing_ratio,
+                                      double r_a, KernelKind kernel = KernelKind());
+
 // Swegle's criterion (W'' < 0 for r < q* h, q* the kernel's INFLECTION: 2/3 for the cubic
 // spline, the paper's case, 1/2 for Wendland C2) applied to a split, for a refined particle i
 // and a neighbour j at distance d_ij = neighbour_distance * d_ref:

@@ -58,6 +58,7 @@ bool parse(int argc, char **argv, Options &o)
 struct Row {
   double eps, alpha, ea, eb, ea_error, eb_error;
   InstabilityConditions c100, c085;
+  SplitStressDefect defect;
 };
 
 }    // namespace
@@ -77,19 +78,20 @@ int main(int argc, char **argv)
       const auto b = kernel_gradient_error(o.dimension, eps, alpha, o.ra, NeighbourSmoothing::REFINED, o.tolerance);
       rows.push_back({eps, alpha, a.value, b.value, a.error_estimate, b.error_estimate,
                       instability_conditions(eps, alpha, o.ra, 1.0),
-                      instability_conditions(eps, alpha, o.ra, 0.85)});
+                      instability_conditions(eps, alpha, o.ra, 0.85),
+                      split_stress_defect(o.dimension, eps, alpha, o.ra)});
     }
 
   FILE *out = std::fopen(o.csv.c_str(), "w");
   if (!out) return std::fprintf(stderr, "cannot write %s\n", o.csv.c_str()), 1;
   std::fprintf(out, "eps_r,alpha_r,E_a,E_b,E_a_error,E_b_error,cond1,cond2_d1.00,cond3_d1.00,"
-                    "cond2_d0.85,cond3_d0.85,stable_d1.00,stable_d0.85\n");
+                    "cond2_d0.85,cond3_d0.85,stable_d1.00,stable_d0.85,defect_neighbours,defect_daughters\n");
   double max_relative_error = 0.0;
   for (const auto &r : rows) {
-    std::fprintf(out, "%.4f,%.4f,%.8e,%.8e,%.2e,%.2e,%d,%d,%d,%d,%d,%d,%d\n", r.eps, r.alpha, r.ea, r.eb,
-                 r.ea_error, r.eb_error, r.c100.daughters_too_close, r.c100.refined_neighbours,
+    std::fprintf(out, "%.4f,%.4f,%.8e,%.8e,%.2e,%.2e,%d,%d,%d,%d,%d,%d,%d,%.6e,%.6e\n", r.eps, r.alpha, r.ea,
+                 r.eb, r.ea_error, r.eb_error, r.c100.daughters_too_close, r.c100.refined_neighbours,
                  r.c100.unrefined_neighbour, r.c085.refined_neighbours, r.c085.unrefined_neighbour,
-                 !r.c100.any(), !r.c085.any());
+                 !r.c100.any(), !r.c085.any(), r.defect.neighbours, r.defect.daughters);
     if (r.ea > 0) max_relative_error = std::max(max_relative_error, r.ea_error / r.ea);
     if (r.eb > 0) max_relative_error = std::max(max_relative_error, r.eb_error / r.eb);
   }
@@ -129,10 +131,13 @@ int main(int argc, char **argv)
     const double eps = paper[k][0], alpha = paper[k][1];
     const auto a = kernel_gradient_error(o.dimension, eps, alpha, o.ra, NeighbourSmoothing::UNREFINED, o.tolerance);
     const auto b = kernel_gradient_error(o.dimension, eps, alpha, o.ra, NeighbourSmoothing::REFINED, o.tolerance);
+    const auto defect = split_stress_defect(o.dimension, eps, alpha, o.ra);
     std::snprintf(line, sizeof line, "    {\"eps_r\": %.2f, \"alpha_r\": %.2f, \"E_a\": %.5g, \"E_b\": %.5g, "
-                  "\"stable_d1.00\": %s, \"stable_d0.85\": %s}%s\n", eps, alpha, a.value, b.value,
+                  "\"stable_d1.00\": %s, \"stable_d0.85\": %s, \"defect_neighbours\": %.4g, "
+                  "\"defect_daughters\": %.4g}%s\n", eps, alpha, a.value, b.value,
                   stable_refinement(eps, alpha, o.ra, 1.0) ? "true" : "false",
-                  stable_refinement(eps, alpha, o.ra, 0.85) ? "true" : "false", k < 3 ? "," : "");
+                  stable_refinement(eps, alpha, o.ra, 0.85) ? "true" : "false", defect.neighbours,
+                  defect.daughters, k < 3 ? "," : "");
     json += line;
   }
   json += "  ]\n}\n";

@@ -1,7 +1,7 @@
 """The refinement options of the studies that bisect a failure (vertical_cut, strength_reduction):
-the command line's --refine, --stepping, --criterion, --threshold, --every and --balance, the
-input variables they set (examples/vertical_cut and examples/slope read the same names: refine,
-stepping, criterion, threshold, check, balance), a directory tag and a title per configuration,
+the command line's --refine, --stepping, --criterion, --threshold, --every, --balance and
+--split, the input variables they set (examples/vertical_cut and examples/slope read the same
+names: refine, stepping, criterion, threshold, check, balance, separation, smoothing), a directory tag and a title per configuration,
 and the fields that describe it in a JSON summary."""
 
 
@@ -21,6 +21,9 @@ def add_arguments(p, every):
                    help='with --refine: balance the ranks\' work (fix balance weighted by step_period)')
     p.add_argument('--threshold', type=float, default=None,
                    help='with --refine: the criterion\'s threshold (the input\'s default without it)')
+    p.add_argument('--split', type=float, nargs=2, default=None, metavar=('EPS', 'ALPHA'),
+                   help='with --refine: the daughters\' separation and smoothing ratio (the input\'s '
+                        'default without it)')
     p.set_defaults(default_every=every)
 
 
@@ -30,7 +33,8 @@ def variables(args):
         return [('refine', '0')]
     return [('refine', str(args.refine)), ('stepping', args.stepping), ('criterion', args.criterion),
             ('check', str(args.every)), ('balance', '1' if args.balance else '0')] + \
-        ([('threshold', f'{args.threshold:g}')] if args.threshold is not None else [])
+        ([('threshold', f'{args.threshold:g}')] if args.threshold is not None else []) + \
+        ([('separation', f'{args.split[0]:g}'), ('smoothing', f'{args.split[1]:g}')] if args.split else [])
 
 
 def tag(args):
@@ -46,6 +50,8 @@ def tag(args):
         t += f'_N{args.every}'
     if args.balance:
         t += '_balanced'
+    if args.split:
+        t += f'_split{args.split[0]:g}_{args.split[1]:g}'
     return t
 
 
@@ -54,7 +60,8 @@ def title(args):
     if not args.refine:
         return ''
     return (f', refined {"once" if args.refine == 1 else f"{args.refine} levels"}'
-            f'{", a step per level" if args.stepping == "level" else ""}')
+            f'{", a step per level" if args.stepping == "level" else ""}'
+            f'{f", split {args.split[0]:g} / {args.split[1]:g}" if args.split else ""}')
 
 
 def summary(args, spacing):
@@ -63,4 +70,5 @@ def summary(args, spacing):
     return {'spacing_m': spacing, 'finest_spacing_m': spacing / 2 ** args.refine, 'refined': args.refine,
             'stepping': args.stepping if args.refine else None,
             'criterion': args.criterion if args.refine else None, 'threshold': args.threshold,
-            'every': args.every if args.refine else None, 'balanced': bool(args.refine and args.balance)}
+            'every': args.every if args.refine else None, 'balanced': bool(args.refine and args.balance),
+            'split': args.split if args.refine else None}

@@ -195,6 +195,9 @@ def test_bisection_summary_and_refinement_options():
     args = p.parse_args(['vertical-cut', '--refine', '--every', '48'])
     assert refine_options.tag(args) == '_refined_N48' and refine_options.title(args) == ', refined once'
     assert refine_options.variables(p.parse_args(['vertical-cut'])) == [('refine', '0')]
+    args = p.parse_args(['vertical-cut', '--refine', '--split', '0.4', '0.9'])
+    assert refine_options.variables(args)[-2:] == [('separation', '0.4'), ('smoothing', '0.9')]
+    assert refine_options.tag(args) == '_refined_split0.4_0.9' and refine_options.summary(args, 1.0)['split'] == [0.4, 0.9]
 
 
 def test_showcase_compares_with_the_finest_uniform_run(tmp_path):
@@ -229,3 +232,25 @@ def test_showcase_compares_with_the_finest_uniform_run(tmp_path):
     assert (doc / 'img' / 'showcase_slope.png').stat().st_size > 0
     with pytest.raises(SystemExit, match='unknown footing'):
         cli.main(['showcase', 'footing', '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])
+
+
+def test_showcase_runs_the_missing_configurations(tmp_path, monkeypatch):
+    """--run hands each configuration without a JSON to its study, with the showcase's bracket;
+    a configuration whose study stops (no bracket) does not stop the others."""
+    from sph_soil.studies import showcase, strength_reduction
+    seen = []
+
+    def fake_main(args):
+        seen.append((args.d, args.refine, args.split, args.low, args.high, args.steps))
+        if args.split:
+            raise SystemExit('strength_reduction: [1.25, 1.5] is not a bracket')
+    monkeypatch.setattr(strength_reduction, 'main', fake_main)
+    work = tmp_path / 'work'
+    (work / 'slope').mkdir(parents=True)
+    (work / 'slope' / 'u05.json').write_text(json.dumps({     # there: not run again
+        'spacing_m': 0.5, 'refined': 0, 'stands_up_to': 1.375, 'fails_from': 1.5, 'critical': 1.4375,
+        'half_width': 0.0625, 'wall_seconds_all_runs': 60.0}))
+    cli.main(['showcase', 'slope', '--run', '--workdir', str(work), '--doc', str(tmp_path / 'doc')])
+    names = [name for name, _, _ in showcase.SHOWCASES['slope']['configurations']]
+    assert len(seen) == len(names) - 1 and seen[0][:3] == (0.5, 1, None)
+    assert all(s[3:] == (1.25, 1.5, 1) for s in seen) and [0.4, 0.9] in [s[2] for s in seen]

@@ -21,6 +21,7 @@ time, the uniform runs' convergence joined by a line).
   python3 -m sph_soil showcase [vertical-cut slope] [--run] [--lmp build/lmp] [--np 2]
                                [--workdir /tmp/sph_soil_showcase]
 """
+import argparse
 import json
 import os
 import sys
@@ -59,6 +60,10 @@ SHOWCASES = {
              ['--d', '0.5', '--refine', '1', '--stepping', 'level', '--balance']),
             ('l2_level', 'maxlevel 2 from 0.5 m, a step per level',
              ['--d', '0.5', '--refine', '2', '--stepping', 'level', '--balance']),
+            ('l1_from05_level_split', 'maxlevel 1 from 0.5 m, a step per level, split 0.4 / 0.9',
+             ['--d', '0.5', '--refine', '1', '--stepping', 'level', '--balance', '--split', '0.4', '0.9']),
+            ('l2_level_split', 'maxlevel 2 from 0.5 m, a step per level, split 0.4 / 0.9',
+             ['--d', '0.5', '--refine', '2', '--stepping', 'level', '--balance', '--split', '0.4', '0.9']),
             ('u025', 'uniform 0.25 m', ['--d', '0.25']),
             ('u0125', 'uniform 0.125 m', ['--d', '0.125']),
             ('l2_global', 'maxlevel 2 from 0.5 m, one global step',
@@ -71,17 +76,18 @@ SHOWCASES = {
 
 def run_configuration(showcase, name, options, args):
     """One configuration's bisection, in this process (the study's own main)."""
-    from ..cli import parser
     directory = os.path.join(args.workdir, showcase)
     os.makedirs(directory, exist_ok=True)
-    spec = SHOWCASES[showcase]
-    argv = [spec['study'].COMMAND, *spec['bracket'], *options, '--np', str(args.np),
+    study = SHOWCASES[showcase]['study']
+    argv = [*SHOWCASES[showcase]['bracket'], *options, '--np', str(args.np),
             '--workdir', os.path.join(directory, 'runs'), '--json', os.path.join(directory, f'{name}.json'),
             '--plot', os.path.join(directory, f'{name}.png')] + (['--lmp', args.lmp] if args.lmp else [])
-    print(f'showcase {showcase}: {name}: python3 -m sph_soil {" ".join(argv)}', file=sys.stderr, flush=True)
-    sub = parser().parse_args(argv)
+    print(f'showcase {showcase}: {name}: python3 -m sph_soil {study.COMMAND} {" ".join(argv)}', file=sys.stderr,
+          flush=True)
+    parser = argparse.ArgumentParser(prog=study.COMMAND)
+    study.add_arguments(parser)
     try:
-        sub.main(sub)
+        study.main(parser.parse_args(argv))
     except SystemExit as e:     # e.g. the bracket does not hold for this configuration: go on
         print(f'showcase {showcase}: {name} gave no result: {e}', file=sys.stderr, flush=True)
 
@@ -107,7 +113,7 @@ def compare(showcase, results):
         rows.append({
             'name': name, 'label': labels[name], 'spacing_m': r['spacing_m'],
             'finest_spacing_m': r.get('finest_spacing_m', r['spacing_m']), 'refined': r['refined'],
-            'stepping': r.get('stepping'), 'critical': r['critical'], 'half_width': r['half_width'],
+            'stepping': r.get('stepping'), 'split': r.get('split'), 'critical': r['critical'], 'half_width': r['half_width'],
             'stands_up_to': r['stands_up_to'], 'fails_from': r['fails_from'],
             'wall_seconds': r['wall_seconds_all_runs'],
             'cost_over_finest_uniform': round(r['wall_seconds_all_runs'] / finest['wall_seconds_all_runs'], 3),
@@ -137,9 +143,9 @@ def figure(showcase, summary, out):
     markers = {1: 'o', 2: 'D', 3: '^'}
     for r in rows:
         if r['refined']:
+            colour = 'tab:green' if r.get('split') else 'tab:red' if r['stepping'] == 'level' else 'tab:blue'
             ax.errorbar([r['wall_seconds']], [r['critical']], yerr=[r['half_width']], capsize=3,
-                        marker=markers.get(r['refined'], 'v'), linestyle='none',
-                        color='tab:red' if r['stepping'] == 'level' else 'tab:blue',
+                        marker=markers.get(r['refined'], 'v'), linestyle='none', color=colour,
                         label=f"{r['label']} ({r['cost_over_finest_uniform']:.2f}x)")
     finest = next(r for r in rows if r['name'] == summary['finest_uniform'])
     if summary['tolerance']:
