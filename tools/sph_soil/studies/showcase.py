@@ -62,14 +62,16 @@ SHOWCASES = {
              ['--d', '0.5', '--refine', '2', '--stepping', 'level', '--balance']),
             ('l1_from05_level_split', 'maxlevel 1 from 0.5 m, a step per level, split 0.4 / 0.9',
              ['--d', '0.5', '--refine', '1', '--stepping', 'level', '--balance', '--split', '0.4', '0.9']),
-            ('l2_level_split', 'maxlevel 2 from 0.5 m, a step per level, split 0.4 / 0.9',
-             ['--d', '0.5', '--refine', '2', '--stepping', 'level', '--balance', '--split', '0.4', '0.9']),
             ('u025', 'uniform 0.25 m', ['--d', '0.25']),
             ('u0125', 'uniform 0.125 m', ['--d', '0.125']),
             ('l2_global', 'maxlevel 2 from 0.5 m, one global step',
              ['--d', '0.5', '--refine', '2', '--balance']),
             ('l1_from025_level', 'maxlevel 1 from 0.25 m, a step per level',
              ['--d', '0.25', '--refine', '1', '--stepping', 'level', '--balance']),
+            ('l1_from025_level_split', 'maxlevel 1 from 0.25 m, a step per level, split 0.4 / 0.9',
+             ['--d', '0.25', '--refine', '1', '--stepping', 'level', '--balance', '--split', '0.4', '0.9']),
+            ('l2_level_split', 'maxlevel 2 from 0.5 m, a step per level, split 0.4 / 0.9',
+             ['--d', '0.5', '--refine', '2', '--stepping', 'level', '--balance', '--split', '0.4', '0.9']),
         ]},
 }
 
@@ -131,7 +133,7 @@ def compare(showcase, results):
 def figure(showcase, summary, out):
     """The answer (the bisection's bracket as an error bar) against the wall time of all runs."""
     plt = report.pyplot()
-    fig, ax = plt.subplots(figsize=(7.5, 4.6))
+    fig, ax = plt.subplots(figsize=(7.5, 6.0))
     rows = summary['configurations']
     uniform = sorted((r for r in rows if not r['refined']), key=lambda r: r['wall_seconds'])
     ax.errorbar([r['wall_seconds'] for r in uniform], [r['critical'] for r in uniform],
@@ -157,7 +159,7 @@ def figure(showcase, summary, out):
     ax.set_xlabel('wall time of the bisection, all runs (s, 2 ranks)')
     ax.set_ylabel(summary['quantity'])
     ax.set_title(summary['title'], fontsize=9)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=6.5, loc='upper center', bbox_to_anchor=(0.5, -0.16), ncol=2)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
 
