@@ -17,8 +17,8 @@ import os
 SLOPE_DEG = 35.0      # the hillside's steepest angle
 TOE = 6.0             # where the hillside meets the floor (m)
 BEND = 1.0            # the length over which it bends into the floor (m)
-CHANNEL = 0.06        # the channel's curvature k (1/m): 0.54 m higher 3 m off its axis
-X_RANGE = (-0.5, 16.0)
+CHANNEL = 0.15        # the channel's curvature k (1/m): 1.35 m higher 3 m off its axis
+X_RANGE = (-0.5, 18.0)
 Y_RANGE = (-3.0, 3.0)
 CELL = 0.5            # the mesh's cell (m): two triangles each; create_atoms places the wall
                       # particles on them at the density the input asks for
