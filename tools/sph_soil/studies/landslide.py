@@ -4,8 +4,9 @@ where it was, not the topmost particle):
 
   - runout_m: the x that 99% of the soil's volume lies behind (the front, without stragglers);
   - deposit_height_m: the largest thickness of the deposit, the soil's volume (mass / rho0) in a
-    column of cell x cell over the ground divided by the cell's area (cell: twice the coarse
-    spacing), on the valley floor (beyond the hillside's toe);
+    column of CELL x CELL over the ground divided by the cell's area, on the valley floor (beyond
+    the hillside's toe); CELL is one length for every run (0.4 m, twice the coarsest spacing
+    run), so that runs of any spacing are measured alike;
   - deposit_volume_fraction_on_floor: the share of the soil's volume beyond the toe.
 
 Writes JSON and a plot: the deposit's thickness seen from above, and the front against time
@@ -24,6 +25,7 @@ from ..dumps import read_ave_time, read_dump
 COMMAND = 'landslide'
 DUMP = 'dump.landslide_3d.final'
 RHO0 = 1850.0       # in.landslide_3d's soil density (kg/m^3)
+CELL = 0.4          # the deposit's columns (m)
 
 
 def terrain(directory):
@@ -34,13 +36,12 @@ def terrain(directory):
             for name in ('xlo', 'xhi', 'ylo', 'yhi', 'toe')}
 
 
-def deposit(s, spacing, toe):
+def deposit(s, toe, cell=CELL):
     """The measures of the module's docstring from a final dump `s` (read_dump)."""
     volume = s['mass'] / RHO0
     order = np.argsort(s['x'])
     cumulative = np.cumsum(volume[order]) / volume.sum()
     runout = float(s['x'][order][np.searchsorted(cumulative, 0.99)])
-    cell = 2.0 * spacing
     floor = s['x'] > toe
     ix = np.floor(s['x'][floor] / cell).astype(int)
     iy = np.floor(s['y'][floor] / cell).astype(int)
@@ -58,7 +59,7 @@ def measure(directory, spacing=None):
     if spacing is None:
         spacing = float(log.search(r'Lattice spacing in x,y,z = (\S+)').group(1))
     s = read_dump(os.path.join(directory, DUMP))
-    out = {'spacing_m': spacing, **deposit(s, spacing, terrain(directory)['toe'])}
+    out = {'spacing_m': spacing, **deposit(s, terrain(directory)['toe'])}
     return out, s
 
 
