@@ -47,13 +47,13 @@ Split make_split(int dimension, double eps, double alpha, double ra, NeighbourSm
   return s;
 }
 
-double difference_squared(const Split &s, const double *x)
+// the parent's kernel gradient at x minus its daughters' (each of 1/M of its volume)
+void gradient_difference(const Split &s, const double *x, double *diff)
 {
-  double diff[3] = {0.0, 0.0, 0.0};
   const int D = s.dimension;
   const double r0 = std::sqrt(x[0] * x[0] + x[1] * x[1] + (D == 3 ? x[2] * x[2] : 0.0));
   const double fp = kernel_gradient_factor(s.kernel, D, r0, s.h_parent);
-  for (int a = 0; a < D; a++) diff[a] = fp * x[a];
+  for (int a = 0; a < 3; a++) diff[a] = a < D ? fp * x[a] : 0.0;
   const double lambda = 1.0 / s.ndaughters;
   for (int d = 0; d < s.ndaughters; d++) {
     double dx[3], r2 = 0.0;
@@ -64,9 +64,13 @@ double difference_squared(const Split &s, const double *x)
     const double fd = lambda * kernel_gradient_factor(s.kernel, D, std::sqrt(r2), s.h_daughter);
     for (int a = 0; a < D; a++) diff[a] -= fd * dx[a];
   }
-  double sum = 0.0;
-  for (int a = 0; a < D; a++) sum += diff[a] * diff[a];
-  return sum;
+}
+
+double difference_squared(const Split &s, const double *x)
+{
+  double diff[3];
+  gradient_difference(s, x, diff);
+  return diff[0] * diff[0] + diff[1] * diff[1] + diff[2] * diff[2];
 }
 
 // the pattern is symmetric under x^a -> -x^a for each a: integrate over [0, L]^D, times 2^D
@@ -160,66 +164,41 @@ SplitStressDefect SPHSoil::split_stress_defect(int dimension, double separation,
                                                double r_a, KernelKind kernel)
 {
   const int D = dimension;
-  const Split s = make_split(D, separation, smoothing_ratio, r_a, NeighbourSmoothing::UNREFINED, kernel);
-  const double hp = r_a, hd = smoothing_ratio * r_a, support = kernel_support(kernel);
-  const double lambda = 1.0 / s.ndaughters;    // a daughter's volume, the parent's being 1
-  // the lattice sites that see the split, and whose own supports lie in the lattice used
-  const int reach = (int) std::ceil(support * hp + 0.5 * separation) + 1;
-  const int n = 2 * reach + (int) std::ceil(support * hp) + 1;
-  // sum_j V_j grad W(x - x_j, (h + h_j)/2) over the lattice without the parent (h: the
-  // smoothing length of the particle at x)
-  auto lattice_sum = [&](const double *x, double h, double *sum) {
-    for (int a = 0; a < 3; a++) sum[a] = 0.0;
-    const int kmax = D == 3 ? n : 0;
-    for (int i = -n; i <= n; i++)
-      for (int j = -n; j <= n; j++)
-        for (int k = -kmax; k <= kmax; k++) {
-          if (i == 0 && j == 0 && k == 0) continue;
-          const double dx[3] = {x[0] - i, x[1] - j, D == 3 ? x[2] - k : 0.0};
-          const double r = std::sqrt(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2]);
-          if (r == 0.0) continue;
-          const double f = kernel_gradient_factor(kernel, D, r, 0.5 * (h + hp));
-          for (int a = 0; a < D; a++) sum[a] += f * dx[a];
-        }
-  };
-  // the daughters' term at x
-  auto daughters_sum = [&](const double *x, double h, double *sum) {
-    for (int d = 0; d < s.ndaughters; d++) {
-      double dx[3] = {0.0, 0.0, 0.0}, r2 = 0.0;
-      for (int a = 0; a < D; a++) {
-        dx[a] = x[a] - s.daughters[d][a];
-        r2 += dx[a] * dx[a];
-      }
-      if (r2 == 0.0) continue;
-      const double f = lambda * kernel_gradient_factor(kernel, D, std::sqrt(r2), 0.5 * (h + hd));
-      for (int a = 0; a < D; a++) sum[a] += f * dx[a];
-    }
-  };
-  SplitStressDefect result{0.0, 0.0};
-  // a coarse neighbour: its lattice sum vanished with the parent in it, so what changes is
-  // the daughters' term against the parent's (x - 0)
+  const double hp = r_a, hd = smoothing_ratio * r_a;
+  // the lattice sites within reach of the split (their supports see a daughter)
+  const int reach = (int) std::ceil(kernel_support(kernel) * hp + 0.5 * separation) + 1;
   const int kmax = D == 3 ? reach : 0;
+  SplitStressDefect result{0.0, 0.0};
+  // A coarse neighbour at x: its lattice sum vanished with the parent in it; the split replaces
+  // the parent's gradient by the daughters' at (h_p + alpha_r h_p)/2, which is the
+  // kernel-gradient difference of case (a), h(x) = h_p
+  const Split unrefined = make_split(D, separation, smoothing_ratio, r_a, NeighbourSmoothing::UNREFINED, kernel);
   for (int i = -reach; i <= reach; i++)
     for (int j = -reach; j <= reach; j++)
       for (int k = -kmax; k <= kmax; k++) {
         if (i == 0 && j == 0 && k == 0) continue;
         const double x[3] = {(double) i, (double) j, (double) k};
-        double sum[3] = {0.0, 0.0, 0.0};
-        daughters_sum(x, hp, sum);
-        const double r = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-        const double f = kernel_gradient_factor(kernel, D, r, hp);
-        double size = 0.0;
-        for (int a = 0; a < D; a++) size += (sum[a] - f * x[a]) * (sum[a] - f * x[a]);
-        result.neighbours = std::max(result.neighbours, std::sqrt(size));
+        result.neighbours = std::max(result.neighbours, std::sqrt(difference_squared(unrefined, x)));
       }
-  // a daughter (all are alike by symmetry: the first)
-  double sum[3];
-  lattice_sum(s.daughters[0], hd, sum);
-  daughters_sum(s.daughters[0], hd, sum);
-  double size = 0.0;
-  for (int a = 0; a < D; a++) size += sum[a] * sum[a];
-  result.daughters = std::sqrt(size);
-  // a = -(2 p / rho) sum: in units of p / (rho h_p)
+  // A daughter (all are alike by symmetry: the first): the whole lattice, the parent's site
+  // included, seen with (alpha_r h_p + h_p)/2, minus the difference of case (b), h(x) = alpha_r
+  // h_p (the parent's term taken out, its siblings' put in)
+  const Split refined = make_split(D, separation, smoothing_ratio, r_a, NeighbourSmoothing::REFINED, kernel);
+  const double *x = refined.daughters[0];
+  double sum[3] = {0.0, 0.0, 0.0};
+  for (int i = -reach; i <= reach; i++)
+    for (int j = -reach; j <= reach; j++)
+      for (int k = -kmax; k <= kmax; k++) {
+        const double dx[3] = {x[0] - i, x[1] - j, D == 3 ? x[2] - k : 0.0};
+        const double r = std::sqrt(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2]);
+        const double f = kernel_gradient_factor(kernel, D, r, 0.5 * (hd + hp));
+        for (int a = 0; a < D; a++) sum[a] += f * dx[a];
+      }
+  double diff[3];
+  gradient_difference(refined, x, diff);
+  for (int a = 0; a < D; a++) sum[a] -= diff[a];
+  result.daughters = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+  // a = -(2 p / rho) sum_j V_j grad W: in units of p / (rho h_p)
   result.neighbours *= 2.0 * hp;
   result.daughters *= 2.0 * hp;
   return result;

@@ -10,30 +10,13 @@ all cores by default, its screen output on the terminal. Then the example's stud
 (variable NAME index|equal|string VALUE), overridden by the -var arguments given.
 """
 import os
-import re
 import time
 
 from . import paths, runner
+from .inputs import input_variables
 from .studies import EXAMPLE_REPORTS
 
 COMMAND = 'run-example'
-
-
-def input_variables(infile, extra=()):
-    """The input's variables as it runs with the lmp arguments `extra`: NAME -> value (a string):
-    the first value of each 'variable NAME index|equal|string VALUE' line (a constant, or the
-    text of a formula), then each '-var NAME VALUE' of `extra`."""
-    variables = {}
-    with open(infile) as f:
-        for line in f:
-            m = re.match(r'variable\s+(\w+)\s+(?:index|equal|string)\s+(\S+)', line)
-            if m and m.group(1) not in variables:
-                variables[m.group(1)] = m.group(2)
-    extra = list(extra)
-    for k, word in enumerate(extra[:-2]):
-        if word in ('-var', '-v'):
-            variables[extra[k + 1]] = extra[k + 2]
-    return variables
 
 
 def run_example(name, lmp, np, extra=(), run=True):

@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from sph_soil import cli, examples, paths, regression
+from sph_soil import cli, examples, inputs, paths, regression
 from sph_soil.logs import Log
 from sph_soil.studies import EXAMPLE_REPORTS, STUDIES, refinement
 
@@ -81,9 +81,9 @@ def test_every_example_has_a_report():
 
 
 def test_input_variables_with_command_line_overrides():
-    variables = examples.input_variables(paths.example_input('bearing_capacity'), ['-var', 'phi', '20', '-echo', 'both'])
+    variables = inputs.input_variables(paths.example_input('bearing_capacity'), ['-var', 'phi', '20', '-echo', 'both'])
     assert variables['phi'] == '20' and variables['d'] == '0.1' and variables['slip'] == 'freeslip'
-    assert examples.input_variables(paths.example_input('atom_style'))['height'] == '0.1'
+    assert inputs.input_variables(paths.example_input('atom_style'))['height'] == '0.1'
 
 
 def test_help_lists_every_study():
@@ -254,3 +254,40 @@ def test_showcase_runs_the_missing_configurations(tmp_path, monkeypatch):
     names = [name for name, _, _ in showcase.SHOWCASES['slope']['configurations']]
     assert len(seen) == len(names) - 1 and seen[0][:3] == (0.5, 1, None)
     assert all(s[3:] == (1.25, 1.5, 1) for s in seen) and [0.4, 0.9] in [s[2] for s in seen]
+
+
+def test_landslide_deposit_by_volume():
+    """The deposit's measures count volume, not particles: four daughters of a quarter of the
+    mass in place of their parent change nothing, and a straggler beyond the 99% line does not
+    move the runout."""
+    import numpy as np
+    from sph_soil.studies import landslide
+
+    def dump(x, volume):
+        x = np.asarray(x, dtype=float)
+        return {'x': x, 'y': np.zeros_like(x), 'z': np.zeros_like(x), 'mass': landslide.RHO0 * np.asarray(volume),
+                'c_soil': np.zeros_like(x)}
+    spread = list(np.linspace(6.5, 9.0, 98))
+    parent = landslide.deposit(dump([7.3] + spread + [20.0], [8e-3] + [1e-3] * 98 + [1e-5]), toe=6.0)
+    split = landslide.deposit(dump([7.25, 7.25, 7.35, 7.35] + spread + [20.0], [2e-3] * 4 + [1e-3] * 98 + [1e-5]),
+                              toe=6.0)
+    assert parent == {**split, 'soil_particles': parent['soil_particles']}
+    assert parent['runout_m'] < 9.01 and parent['deposit_volume_fraction_on_floor'] == 1.0
+    # the column [7.2, 7.6) holds the parent's volume and the spread particles in it
+    inside = sum(1e-3 for v in spread if 7.2 <= v < 7.6)
+    assert parent['deposit_height_m'] == pytest.approx(round((8e-3 + inside) / landslide.CELL ** 2, 4))
+
+
+def test_runner_links_the_files_an_input_reads(tmp_path):
+    """An example run in a scratch directory finds its data, STL and include files."""
+    from sph_soil import runner
+    source = tmp_path / 'example'
+    source.mkdir()
+    for name in ('in.case', 'log.case', 'terrain.stl', 'terrain.lmp', 'data.case', 'notes.txt'):
+        (source / name).write_text(name)
+    work = tmp_path / 'work'
+    work.mkdir()
+    runner.link_inputs(str(source / 'in.case'), str(work))
+    runner.link_inputs(str(source / 'in.case'), str(work))    # again: the links are renewed
+    assert sorted(os.listdir(work)) == ['data.case', 'terrain.lmp', 'terrain.stl']
+    assert (work / 'terrain.stl').read_text() == 'terrain.stl'

@@ -55,9 +55,11 @@ def deposit(s, toe, cell=CELL):
 
 
 def measure(directory, spacing=None):
-    log = logs.Log(os.path.join(directory, 'log.lammps'))
+    """The deposit of the run in `directory`; its spacing (the lattice's) from the newest run log
+    unless given."""
     if spacing is None:
-        spacing = float(log.search(r'Lattice spacing in x,y,z = (\S+)').group(1))
+        spacing = next(float(m.group(1)) for m in (logs.Log(path).search(r'Lattice spacing in x,y,z = (\S+)')
+                                                   for path in logs.run_logs(directory)) if m)
     s = read_dump(os.path.join(directory, DUMP))
     out = {'spacing_m': spacing, **deposit(s, terrain(directory)['toe'])}
     return out, s
@@ -86,8 +88,8 @@ def plot(summary, s, history, toe, out):
     fig.savefig(out, dpi=130)
 
 
-def landslide(directory, json_path=None, plot_path=None, wall_seconds=None):
-    summary, s = measure(directory)
+def landslide(directory, json_path=None, plot_path=None, wall_seconds=None, spacing=None):
+    summary, s = measure(directory, spacing)
     summary['wall_seconds'] = wall_seconds if wall_seconds is not None else logs.wall_seconds(directory)
     report.write_json(summary, json_path, indent=2)
     if plot_path:
@@ -100,7 +102,7 @@ def landslide(directory, json_path=None, plot_path=None, wall_seconds=None):
 def report_example(directory, log, variables, seconds):
     """run_example's numbers and plot: landslide_3d.json, landslide_3d.png."""
     landslide(directory, os.path.join(directory, 'landslide_3d.json'),
-              os.path.join(directory, 'landslide_3d.png'), seconds)
+              os.path.join(directory, 'landslide_3d.png'), seconds, float(variables['d']))
 
 
 def add_arguments(p):

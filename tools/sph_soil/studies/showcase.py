@@ -97,7 +97,6 @@ def run_configuration(showcase, name, options, args):
 def compare(showcase, results):
     """Every configuration against the finest uniform one. results: name -> its study's JSON."""
     spec = SHOWCASES[showcase]
-    labels = {name: label for name, label, _ in spec['configurations']}
     uniform = sorted((r['spacing_m'], name) for name, r in results.items() if not r['refined'])
     if not uniform:
         return None
@@ -113,7 +112,7 @@ def compare(showcase, results):
         # the uniform run at this configuration's finest spacing, if it was run
         same = by_spacing.get(r.get('finest_spacing_m', r['spacing_m'])) if r['refined'] else None
         rows.append({
-            'name': name, 'label': labels[name], 'spacing_m': r['spacing_m'],
+            'name': name, 'label': label, 'spacing_m': r['spacing_m'],
             'finest_spacing_m': r.get('finest_spacing_m', r['spacing_m']), 'refined': r['refined'],
             'stepping': r.get('stepping'), 'split': r.get('split'), 'critical': r['critical'], 'half_width': r['half_width'],
             'stands_up_to': r['stands_up_to'], 'fails_from': r['fails_from'],

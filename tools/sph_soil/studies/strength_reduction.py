@@ -16,7 +16,7 @@ JSON, so another threshold can be applied to the same runs. Prints JSON, writes 
   python3 -m sph_soil strength-reduction [--input examples/slope/in.slope] [--lmp build/lmp] [--np 2]
                               [--d 0.5] [--var NAME VALUE] [--low 1.0] [--high 2.0] [--steps 4]
                               [--refine [N]] [--stepping global|level] [--criterion strain|shear_strain_rate]
-                              [--threshold T] [--every N] [--balance]
+                              [--threshold T] [--every N] [--balance] [--split EPS ALPHA]
                               [--data slope.dat] [--length 10] [--creep 0.001] [--late 0.3]
                               [--reference 1.4] [--workdir /tmp/sph_soil_strength_reduction]
                               [--json examples/slope/slope.json] [--plot examples/slope/slope.png]
@@ -27,11 +27,13 @@ import numpy as np
 
 from .. import analysis, bisection, paths, refine_options, report, runner
 from ..dumps import read_ave_time
+from ..inputs import input_variables
 
 COMMAND = 'strength-reduction'
 DATA, LENGTH, CREEP, LATE = 'slope.dat', 10.0, 0.001, 0.3     # examples/slope's monitor and criterion
 REFERENCE = 1.4     # the published factor of safety (Griffiths & Lane 1999, example 1)
-SPACING, CHECK = 0.5, 16    # examples/slope's default spacing (m) and refinement check interval
+# examples/slope's own defaults: its spacing (m) and refinement check interval
+DEFAULTS = input_variables(paths.example_input('slope'))
 
 
 def measure(directory, factor, data=DATA, length=LENGTH, creep=CREEP, late=LATE, seconds=None):
@@ -82,13 +84,14 @@ def report_example(directory, log, variables, seconds):
 def add_arguments(p):
     runner.add_arguments(p)
     p.add_argument('--input', default=paths.example_input('slope'))
-    p.add_argument('--d', type=float, default=SPACING, help='the particle spacing (m; the input\'s -var d)')
+    p.add_argument('--d', type=float, default=float(DEFAULTS['d']),
+                   help='the particle spacing (m; the input\'s -var d)')
     p.add_argument('--var', nargs=2, action='append', default=[], metavar=('NAME', 'VALUE'),
                    help='another LAMMPS variable for every run (e.g. --var tend 20)')
     p.add_argument('--low', type=float, default=1.0)
     p.add_argument('--high', type=float, default=2.0)
     p.add_argument('--steps', type=int, default=4)
-    refine_options.add_arguments(p, every=CHECK)
+    refine_options.add_arguments(p, every=int(DEFAULTS['check']))
     p.add_argument('--data', default=DATA)
     p.add_argument('--length', type=float, default=LENGTH, help='the length the creep threshold refers to (m)')
     p.add_argument('--creep', type=float, default=CREEP)

@@ -15,6 +15,7 @@ displacement against time for every run.
   python3 -m sph_soil vertical-cut [--lmp build/lmp] [--np 2] [--d 0.025] [--low 3.0] [--high 4.5]
                         [--steps 4] [--creep 0.001] [--refine [N]] [--stepping global|level]
                         [--criterion strain|shear_strain_rate] [--threshold T] [--every N] [--balance]
+                        [--split EPS ALPHA]
                         [--workdir /tmp/sph_soil_vertical_cut]
                         [--json examples/vertical_cut/vertical_cut.json]
                         [--plot examples/vertical_cut/vertical_cut.png]
@@ -25,10 +26,12 @@ import numpy as np
 
 from .. import analysis, bisection, paths, refine_options, report, runner
 from ..dumps import read_ave_time
+from ..inputs import input_variables
 from ..logs import Log
 
 COMMAND = 'vertical-cut'
 EXAMPLE = paths.example_input('vertical_cut')
+DEFAULTS = input_variables(EXAMPLE)    # the input's own spacing and check interval
 HEIGHT = 1.0
 PASTOR = (3.772, 3.786)
 CREEP = 0.001       # failure: the crest moves more than this times H over the last 30% of the run
@@ -83,13 +86,13 @@ def report_example(directory, log, variables, seconds):
 
 def add_arguments(p):
     runner.add_arguments(p)
-    p.add_argument('--d', type=float, default=0.025)
+    p.add_argument('--d', type=float, default=float(DEFAULTS['d']))
     p.add_argument('--low', type=float, default=3.0)
     p.add_argument('--high', type=float, default=4.5)
     p.add_argument('--steps', type=int, default=4)
     p.add_argument('--creep', type=float, default=CREEP,
                    help='failure: the crest moves more than this times H over the last 30%% of the run')
-    refine_options.add_arguments(p, every=10)
+    refine_options.add_arguments(p, every=int(DEFAULTS['check']))
     p.add_argument('--workdir', default='/tmp/sph_soil_vertical_cut')
     p.add_argument('--json')
     p.add_argument('--plot')
