@@ -343,6 +343,14 @@ std::vector<BadInput> cases()
         "Illegal fix sph/soil/refine smoothing 1.5: must be in (0, 1)");
   error("RefineDref", "patch", {}, "fix r all sph/soil/refine 10 dref 0",
         "Illegal fix sph/soil/refine dref 0: must be > 0");
+  error("RefineBuffer", "patch", {}, "fix r all sph/soil/refine 10 buffer 1.5",
+        "Illegal fix sph/soil/refine buffer 1.5: must be in [0, 1]");
+  error("StaticRefineBuffer", "patch", {}, "sph_soil/refine all buffer -0.5",
+        "Illegal sph_soil/refine buffer -0.5: must be in [0, 1]");
+  error("RefineEaseZero", "patch", {}, "fix r all sph/soil/refine 10 ease 0",
+        "Illegal fix sph/soil/refine ease 0: must be > 0");
+  error("RefineEaseWord", "patch", {}, "fix r all sph/soil/refine 10 ease soon",
+        "Illegal fix sph/soil/refine ease soon: must be a time > 0 or no");
   error("RefineMaxlevel", "patch", {}, "fix r all sph/soil/refine 10 maxlevel 31",
         "Illegal fix sph/soil/refine maxlevel 31: must be in 1 to 30");
   error("RefineMaxlevelZero", "patch", {}, "fix r all sph/soil/refine 10 maxlevel 0",
@@ -369,8 +377,8 @@ std::vector<BadInput> cases()
   error("RefineSince", "patch", {}, "fix r all sph/soil/refine 10 since birth",
         "Illegal fix sph/soil/refine since birth: must be split or start");
   error("RefineUnknownKeyword", "patch", {}, "fix r all sph/soil/refine 10 ratio 2",
-        "Illegal fix sph/soil/refine keyword ratio (allowed: criterion, region, threshold, since, separation, "
-        "smoothing, dref, maxlevel, merge)");
+        "Illegal fix sph/soil/refine keyword ratio (allowed: criterion, region, buffer, threshold, since, separation, "
+        "smoothing, dref, maxlevel, merge, ease)");
   error("RefineUnknownCriterion", "patch", {}, "fix r all sph/soil/refine 10 criterion stress",
         "Illegal fix sph/soil/refine criterion stress (allowed: strain, all, v_name)");
   error("RefineKeywordOfAnotherCriterion", "patch", {}, "fix r all sph/soil/refine 10 criterion all threshold 0.1",
@@ -409,7 +417,7 @@ std::vector<BadInput> cases()
   error("StaticRefineRegion", "patch", {}, "sph_soil/refine all region nowhere",
         "sph_soil/refine region nowhere does not exist");
   error("StaticRefineUnknownKeyword", "patch", {}, "sph_soil/refine all maxlevel 2",
-        "Illegal sph_soil/refine keyword maxlevel (allowed: criterion, region, threshold, since, separation, "
+        "Illegal sph_soil/refine keyword maxlevel (allowed: criterion, region, buffer, threshold, since, separation, "
         "smoothing, dref)");
   error("StaticRefineUnknownCriterion", "patch", {}, "sph_soil/refine all criterion 0.5",
         "Illegal sph_soil/refine criterion 0.5 (allowed: strain, all, v_name)");

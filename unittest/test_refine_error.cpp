@@ -149,3 +149,22 @@ TEST(RefineError, SplitStressDefectAgainstAnIndependentLatticeSum)
   EXPECT_GT(cube.neighbours, 0.05);
   EXPECT_GT(cube.daughters, cube.neighbours);
 }
+
+// The edge of a refined zone, against an independent sum (numpy: a coarse half-lattice under
+// the half-lattice of daughters, the cubic spline, 2D, r_a = 1.2)
+TEST(RefineError, LevelEdgeDefectAgainstAnIndependentLatticeSum)
+{
+  // coinciding daughters with the parent's h: no edge at all
+  SplitStressDefect none = level_edge_defect(2, 0.0, 1.0, 1.2);
+  EXPECT_LT(none.neighbours, 1e-12);
+  EXPECT_LT(none.daughters, 1e-12);
+  SplitStressDefect usual = level_edge_defect(2, 0.5, 0.5, 1.2);
+  EXPECT_NEAR(usual.neighbours, 0.085966, 1e-5);
+  EXPECT_NEAR(usual.daughters, 0.378434, 1e-5);
+  SplitStressDefect wide = level_edge_defect(2, 0.5, 0.9, 1.2);
+  EXPECT_NEAR(wide.neighbours, 0.005055, 1e-5);
+  EXPECT_NEAR(wide.daughters, 0.047416, 1e-5);
+  SplitStressDefect cube = level_edge_defect(3, 0.5, 0.5, 1.2);
+  EXPECT_GT(cube.neighbours, 0.01);
+  EXPECT_GT(cube.daughters, cube.neighbours);
+}

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <set>
 
 using namespace LAMMPS_NS;
@@ -164,6 +165,70 @@ class Refinement : public SoilTest {
     }
     MPI_Allreduce(&bad, &all, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
     return all == 0;
+  }
+
+  // The patch, written to a data file, then `lines` (from "units si" on) run here and, on rank
+  // 0, alone in a LAMMPS of its own: the two final states, per atom ID, agree to `tolerance`
+  // (relative) in the state_names() columns `columns`
+  void expect_same_on_one_rank(const std::vector<std::string> &lines, const std::vector<int> &columns,
+                               double tolerance)
+  {
+    HIDE_OUTPUT([&] {
+      command("write_data refine.data");
+      command("clear");
+      for (const auto &line : lines) command(line);
+    });
+    auto parallel = gather_state(lmp);
+    EXPECT_EQ((bigint) parallel.size(), lmp->atom->natoms);    // IDs unique
+    EXPECT_GT(lmp->atom->natoms, 144);                          // something was split
+    if (rank() != 0) return;
+    const char *argv[] = {"serial", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
+    auto single = new LAMMPS(8, (char **) argv, MPI_COMM_SELF);
+    for (const auto &line : lines) single->input->one(line);
+    std::map<tagint, std::vector<double>> serial;
+    for (int i = 0; i < single->atom->nlocal; i++) serial[single->atom->tag[i]] = atom_state(single, i);
+    delete single;
+    ASSERT_EQ(serial.size(), parallel.size());
+    for (const auto &entry : serial) {
+      const auto &p = parallel.at(entry.first);
+      for (int k : columns)
+        EXPECT_NEAR(p[k], entry.second[k], tolerance * std::fabs(entry.second[k]) + 1e-15)
+            << "atom " << entry.first << " " << state_names()[k];
+    }
+  }
+
+  // `fixes` on the patch: 40 steps, a restart file, 40 more; then the file read back with the
+  // same fixes (`on_restart` sees the state read) and 40 steps: the same state to round-off
+  void expect_restart_continues(const std::vector<std::string> &fixes,
+                                const std::function<void()> &on_restart = {})
+  {
+    HIDE_OUTPUT([&] {
+      for (const auto &line : fixes) command(line);
+      command("run 40 post no");
+      command("write_restart refine.restart");
+      command("run 40 post no");
+    });
+    auto uninterrupted = gather_state(lmp);
+    const double total_split = fix_vector("refine", 1);
+    HIDE_OUTPUT([&] {
+      command("clear");
+      command("read_restart refine.restart");
+      command("pair_style sph/soil");
+      command(SOIL);
+      command("neighbor 0.003 bin");
+      for (const auto &line : fixes) command(line);
+    });
+    if (on_restart) on_restart();
+    HIDE_OUTPUT([&] { command("run 40 post no"); });
+    EXPECT_EQ(fix_vector("refine", 1), total_split);
+    auto restarted = gather_state(lmp);
+    ASSERT_EQ(restarted.size(), uninterrupted.size());
+    for (const auto &entry : uninterrupted) {
+      const auto &r = restarted.at(entry.first);
+      for (size_t k = 1; k < 23; k++)
+        EXPECT_NEAR(r[k], entry.second[k], 1e-12 * std::fabs(entry.second[k]) + 1e-18)
+            << "atom " << entry.first << " " << state_names()[k];
+    }
   }
 };
 
@@ -614,37 +679,11 @@ TEST_F(Refinement, OrphansOfDifferentTypesDoNotMerge)
 TEST_F(Refinement, SameSplitsOnOneAndTwoRanks)
 {
   patch(2, 12, true);
-  const std::vector<std::string> read = {"units si", "dimension 2", "atom_style sph/soil",
-                                         "atom_modify map array", "read_data refine.data",
-                                         "pair_style sph/soil", SOIL, "neighbor 0.003 bin",
-                                         "thermo 0", "fix integrate all sph/soil cfl 0.1",
-                                         "fix refine all sph/soil/refine 5 threshold 1e-8",
-                                         "run 60 post no"};
-  HIDE_OUTPUT([&] {
-    command("write_data refine.data");
-    command("clear");
-    for (const auto &line : read) command(line);
-  });
-  auto parallel = gather_state(lmp);
-  EXPECT_EQ((bigint) parallel.size(), lmp->atom->natoms);    // IDs unique
-  EXPECT_GT(lmp->atom->natoms, 144);                          // something was split
-
-  std::map<tagint, std::vector<double>> serial;
-  if (rank() == 0) {
-    const char *argv[] = {"serial", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
-    auto single = new LAMMPS(8, (char **) argv, MPI_COMM_SELF);
-    for (const auto &line : read) single->input->one(line);
-    for (int i = 0; i < single->atom->nlocal; i++) serial[single->atom->tag[i]] = atom_state(single, i);
-    delete single;
-  }
-  if (rank() != 0) return;
-  ASSERT_EQ(serial.size(), parallel.size());
-  for (const auto &entry : serial) {
-    const auto &p = parallel.at(entry.first);
-    for (int k : {1, 2, 7, 8, 10})
-      EXPECT_NEAR(p[k], entry.second[k], 1e-10 * std::fabs(entry.second[k]) + 1e-15)
-          << "atom " << entry.first << " " << state_names()[k];
-  }
+  expect_same_on_one_rank({"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
+                           "read_data refine.data", "pair_style sph/soil", SOIL, "neighbor 0.003 bin",
+                           "thermo 0", "fix integrate all sph/soil cfl 0.1",
+                           "fix refine all sph/soil/refine 5 threshold 1e-8", "run 60 post no"},
+                          {1, 2, 7, 8, 10}, 1e-10);
 }
 
 // Under atom_style hybrid the splits go through the hybrid style: the other sub-style's fields
@@ -734,6 +773,85 @@ TEST_F(Refinement, VariableCriterionSplitsExactlyWhereNonZero)
   check("sph_soil/refine");
 }
 
+// A buffer b splits, with a particle the criterion wants, the particles within b kernel supports
+// (b 2h, cubic spline) of it: on the square lattice of spacing d = 1 cm and h = 1.2 cm, around
+// the site (5.5, 5.5) cm, 4 sites within 0.5 support (1.2 cm), 20 within 1 support (2.4 cm).
+// On two ranks the wanted particle is at the edge of its rank's half: the buffer crosses it.
+TEST_F(Refinement, ABufferSplitsTheParticlesWithinItsReachOfAWantedParticle)
+{
+  auto count = [&](const char *what, double reach, int expected_sites) {
+    int far_local = 0, far = 0;
+    for (int i = 0; i < lmp->atom->nlocal; i++) {
+      const double *x = lmp->atom->x[i];
+      // daughters lie within d/4 (each way) of their parent's site
+      if (soil_avec(lmp)->level[i] == 1 && std::hypot(x[0] - 0.055, x[1] - 0.055) > reach + 0.0036)
+        far_local++;
+    }
+    MPI_Allreduce(&far_local, &far, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+    EXPECT_EQ(lmp->atom->natoms, 100 + 3 * expected_sites) << what;
+    EXPECT_EQ(far, 0) << what;
+  };
+  for (double buffer : {0.0, 0.5, 1.0}) {
+    const double reach = buffer * 2.0 * 0.012;
+    int sites = 1;
+    for (int ix = -3; ix <= 3; ix++)
+      for (int iy = -3; iy <= 3; iy++)
+        if ((ix || iy) && std::hypot(ix, iy) * 0.01 < reach) sites++;
+    ASSERT_EQ(sites, buffer == 0.0 ? 1 : buffer == 0.5 ? 5 : 21);
+    for (const char *style : {"fix sph/soil/refine", "sph_soil/refine"}) {
+      HIDE_OUTPUT([&] {
+        command("clear");
+        command("units si");
+      });
+      patch(2, 10, false);
+      HIDE_OUTPUT([&] {
+        command("variable centre atom \"abs(x-0.055) < 0.001 && abs(y-0.055) < 0.001\"");
+        if (std::string(style) == "sph_soil/refine") {
+          command(fmt::format("sph_soil/refine all criterion v_centre buffer {}", buffer));
+        } else {
+          command("fix integrate all sph/soil cfl 0.1");
+          command(fmt::format("fix refine all sph/soil/refine 1 criterion v_centre buffer {}", buffer));
+          command("run 1 post no");
+        }
+      });
+      count(fmt::format("{} buffer {}", style, buffer).c_str(), reach, sites);
+    }
+  }
+}
+
+// A particle at maxlevel that the criterion wants still widens the refined zone: the coarser
+// particles whose kernel reaches it split (a shear band at the finest level keeps fine
+// particles around it). One site split first, its 4 daughters (level 1, d/4 from the site
+// (5.5, 5.5) cm each way) wanted at maxlevel 1: the level-0 sites within one support of their
+// own (2h = 2.4 cm) of a daughter split.
+TEST_F(Refinement, ABufferWidensAroundWantedParticlesAtMaxlevel)
+{
+  patch(2, 10, false);
+  HIDE_OUTPUT([&] {
+    command("variable centre atom \"abs(x-0.055) < 0.001 && abs(y-0.055) < 0.001\"");
+    command("sph_soil/refine all criterion v_centre");
+    command("compute level all sph/soil/atom level");
+    command("variable fine atom c_level>0");
+    command("fix integrate all sph/soil cfl 0.1");
+    command("fix refine all sph/soil/refine 1 maxlevel 1 criterion v_fine buffer 1");
+    command("run 1 post no");
+  });
+  int sites = 0;
+  for (int ix = -3; ix <= 3; ix++)
+    for (int iy = -3; iy <= 3; iy++) {
+      double nearest = 1.0;
+      for (double dx : {-0.0025, 0.0025})
+        for (double dy : {-0.0025, 0.0025}) nearest = std::min(nearest, std::hypot(ix * 0.01 - dx, iy * 0.01 - dy));
+      if ((ix || iy) && nearest < 0.024) sites++;
+    }
+  ASSERT_EQ(sites, 20);    // (a reach of the daughters' own supports, 1.2 cm, would split 8)
+  EXPECT_EQ(lmp->atom->natoms, 100 + 3 + 3 * sites);
+  int deepest_local = 0, deepest = 0;
+  for (int i = 0; i < lmp->atom->nlocal; i++) deepest_local = std::max(deepest_local, soil_avec(lmp)->level[i]);
+  MPI_Allreduce(&deepest_local, &deepest, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  EXPECT_EQ(deepest, 1);
+}
+
 // Computes that build a neighbour list of their own (rdf, property/local) at the steps where
 // particles split: the split leaves the ghosts rebuilt and LAMMPS's lists valid (before, the
 // occasional list's build crashed at such a step), and they see the daughters.
@@ -771,34 +889,85 @@ TEST_F(Refinement, LocalComputesRunAtSplitSteps)
 TEST_F(Refinement, RestartAfterSplitsContinuesIdentically)
 {
   patch(2, 12, true);
-  const std::vector<std::string> fixes = {"fix integrate all sph/soil cfl 0.1",
-                                          "fix refine all sph/soil/refine 5 threshold 1e-8"};
+  expect_restart_continues({"fix integrate all sph/soil cfl 0.1", "fix refine all sph/soil/refine 5 threshold 1e-8"});
+}
+
+// ease T: daughters born with the smoothing ratio of the split's least defect (0.84 at
+// separation 0.5, h/d = 1.2 in 2D: split_stress_defect()), their h then linear in time down to
+// alpha_r h_p = 6 mm at T; the ghosts follow (on two ranks the run below is the same as on one,
+// SameSplitsOnOneAndTwoRanks), and a restart in the middle of the easing continues it.
+TEST_F(Refinement, EasedDaughtersGoFromTheBalancedToTheLevelsSmoothingLength)
+{
+  patch(2, 10, false);
   HIDE_OUTPUT([&] {
-    for (const auto &line : fixes) command(line);
-    command("run 40 post no");
-    command("write_restart refine.restart");
-    command("run 40 post no");
+    command("variable centre atom \"abs(x-0.055) < 0.001 && abs(y-0.055) < 0.001\"");
+    command("fix integrate all sph/soil");
+    command("timestep 1e-6");
+    command("fix refine all sph/soil/refine 1 criterion v_centre ease 1e-5 maxlevel 1");
+    command("run 1 post no");    // split at the end of step 1 (t = 1e-6)
   });
-  auto uninterrupted = gather_state(lmp);
-  const double total_split = fix_vector("refine", 1);
-  HIDE_OUTPUT([&] {
-    command("clear");
-    command("read_restart refine.restart");
-    command("pair_style sph/soil");
-    command(SOIL);
-    command("neighbor 0.003 bin");
-    for (const auto &line : fixes) command(line);
-    command("run 40 post no");
-  });
-  EXPECT_EQ(fix_vector("refine", 1), total_split);
-  auto restarted = gather_state(lmp);
-  ASSERT_EQ(restarted.size(), uninterrupted.size());
-  for (const auto &entry : uninterrupted) {
-    const auto &r = restarted.at(entry.first);
-    for (size_t k = 1; k < 23; k++)
-      EXPECT_NEAR(r[k], entry.second[k], 1e-12 * std::fabs(entry.second[k]) + 1e-18)
-          << "atom " << entry.first << " " << state_names()[k];
+  auto daughters_h = [&](double &lo, double &hi) {
+    double mine[2] = {HUGE_VAL, -HUGE_VAL}, all[2];
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      if (soil_avec(lmp)->level[i] == 1) {
+        mine[0] = std::min(mine[0], soil_avec(lmp)->smoothing_length[i]);
+        mine[1] = std::max(mine[1], soil_avec(lmp)->smoothing_length[i]);
+      }
+    MPI_Allreduce(&mine[0], &all[0], 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+    MPI_Allreduce(&mine[1], &all[1], 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    lo = all[0];
+    hi = all[1];
+  };
+  double lo, hi;
+  daughters_h(lo, hi);
+  EXPECT_NEAR(lo, 0.012 * 0.84, 1e-12);
+  EXPECT_NEAR(hi, 0.012 * 0.84, 1e-12);
+  // 5 and 10 steps after the birth (eased at the start of each step, before its forces)
+  for (double remaining : {0.5, 0.0}) {
+    HIDE_OUTPUT([&] { command("run 5 post no"); });
+    daughters_h(lo, hi);
+    EXPECT_NEAR(lo, 0.006 * (1.0 + (0.84 / 0.5 - 1.0) * remaining), 1e-12) << remaining;
+    EXPECT_NEAR(hi, lo, 1e-15) << remaining;
   }
+  // the ghosts carry the owners' h at every step
+  for (int i = lmp->atom->nlocal; i < lmp->atom->nlocal + lmp->atom->nghost; i++) {
+    const int owner = lmp->atom->map(lmp->atom->tag[i]);
+    if (owner >= 0 && owner < lmp->atom->nlocal)
+      EXPECT_EQ(soil_avec(lmp)->smoothing_length[i], soil_avec(lmp)->smoothing_length[owner]);
+  }
+}
+
+// Easing on one and two ranks: the same h, positions and stress to round-off (compared while
+// the daughters of the splits at steps 5 and 10 ease: the ghosts follow their owners' h). Over
+// longer runs the two drift apart faster than without easing (5e-6 of the stress after 80
+// steps, against under 1e-7): the daughters pass through a smoothing ratio where pairs are
+// unstable (Cond. 1), which grows round-off.
+TEST_F(Refinement, EasingIsTheSameOnOneAndTwoRanks)
+{
+  patch(2, 12, true);
+  expect_same_on_one_rank({"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
+                           "read_data refine.data", "pair_style sph/soil", SOIL, "neighbor 0.003 bin",
+                           "thermo 0", "fix integrate all sph/soil cfl 0.1",
+                           "fix refine all sph/soil/refine 5 threshold 1e-8 maxlevel 2 ease 1e-3",
+                           "run 14 post no"},
+                          {1, 2, 7, 8, 10, 11, 12, 14}, 1e-10);
+}
+
+TEST_F(Refinement, RestartWhileDaughtersEaseContinuesIdentically)
+{
+  patch(2, 12, true);
+  // some daughters are still easing at the restart: born in the last 1e-3 before it
+  expect_restart_continues({"fix integrate all sph/soil cfl 0.1",
+                            "fix refine all sph/soil/refine 5 threshold 1e-8 ease 1e-3"},
+                           [&] {
+                             int easing_local = 0, easing = 0;
+                             for (int i = 0; i < lmp->atom->nlocal; i++)
+                               if (soil_avec(lmp)->level[i] == 1 &&
+                                   soil_avec(lmp)->smoothing_length[i] > 0.006 * (1.0 + 1e-9))
+                                 easing_local++;
+                             MPI_Allreduce(&easing_local, &easing, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+                             EXPECT_GT(easing, 0);
+                           });
 }
 
 TEST_F(Refinement, UnstableParametersAreReported)

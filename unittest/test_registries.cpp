@@ -70,7 +70,7 @@ TEST_F(Registries, ADummyCriterionIsTakenAndListed)
                       "v_name, dummy\\).*",
                       command("fix r all sph/soil/refine 10 criterion nothing"));
   EXPECT_LAMMPS_ERROR(".*Illegal fix sph/soil/refine keyword height \\(allowed: criterion, region, "
-                      "threshold, since, edge, separation, smoothing, dref, maxlevel, merge\\).*",
+                      "buffer, threshold, since, edge, separation, smoothing, dref, maxlevel, merge, ease\\).*",
                       command("fix r all sph/soil/refine 10 height 2"));
 }
 

@@ -58,6 +58,13 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
   nevery = utils::inumeric(FLERR, arg[3], false, lmp);
   if (nevery < 1) error->all(FLERR, "Illegal fix sph/soil/refine N {}: must be >= 1", nevery);
 
+  // a keyword's time > 0, or no (0)
+  auto time_or_no = [&](const std::string &keyword, const char *value, const char *what) {
+    if (std::string(value) == "no") return 0.0;
+    if (!utils::is_double(value))
+      error->all(FLERR, "Illegal fix sph/soil/refine {} {}: must be {} > 0 or no", keyword, value, what);
+    return SPHSoilInput::number(FLERR, lmp, "fix sph/soil/refine " + keyword, value, SPHSoilInput::above(0.0));
+  };
   splitter.reset(new SPHSoilRefineSplitter(lmp, STYLE));
   selection.reset(new SPHSoilRefineSelection(lmp, "fix sph/soil/refine", "strain"));
   for (int iarg = 4; iarg < narg; iarg += 2) {
@@ -71,17 +78,13 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     } else if (keyword == "maxlevel") {
       maxlevel = SPHSoilInput::integer(FLERR, lmp, "fix sph/soil/refine maxlevel", value, 1,
                                        SPHSoil::MAX_LEVEL);
+    } else if (keyword == "ease") {
+      ease_time = time_or_no(keyword, value, "a time");
     } else if (keyword == "merge") {
-      if (std::string(value) == "no")
-        merge_time = 0.0;
-      else if (!utils::is_double(value))
-        error->all(FLERR, "Illegal fix sph/soil/refine merge {}: must be a hold time > 0 or no", value);
-      else
-        merge_time = SPHSoilInput::number(FLERR, lmp, "fix sph/soil/refine merge", value,
-                                          SPHSoilInput::above(0.0));
+      merge_time = time_or_no(keyword, value, "a hold time");
     } else {
       error->all(FLERR, "Illegal fix sph/soil/refine keyword {} (allowed: {}, {}, "
-                        "maxlevel, merge)", keyword, SPHSoilRefineSelection::keywords(), SPHSoilRefineSplitter::KEYWORDS);
+                        "maxlevel, merge, ease)", keyword, SPHSoilRefineSelection::keywords(), SPHSoilRefineSplitter::KEYWORDS);
     }
   }
 
@@ -100,6 +103,7 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     comm_forward = SPHSoilRefineMerger::MERGE_ROW;
     comm_reverse = 1;
   }
+  if (ease_time > 0.0) comm_forward = MAX(comm_forward, 1);
   SPHSoilFixes::keep_per_atom(this, atom);
 }
 
@@ -111,11 +115,19 @@ FixSPHSoilRefine::~FixSPHSoilRefine()
   memory->destroy(strain_at_birth);
   memory->destroy(quiet_since);
   memory->destroy(family);
+  memory->destroy(ease_since);
+  memory->destroy(ease_target);
 }
 
 int FixSPHSoilRefine::setmask()
 {
-  return END_OF_STEP;
+  // (easing in post_integrate: the forces and the adaptive step of the step's end see one h)
+  return END_OF_STEP | (ease_time > 0.0 ? POST_INTEGRATE : 0);
+}
+
+void FixSPHSoilRefine::post_integrate()
+{
+  ease();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -123,7 +135,7 @@ int FixSPHSoilRefine::setmask()
 void FixSPHSoilRefine::init()
 {
   splitter->init();
-  selection->init();
+  selection->init(SPHSoil::kernel_support(splitter->kernel_kind()));
 
   integrator = nullptr;
   for (int ifix = 0; ifix < modify->nfix && !integrator; ifix++)
@@ -159,6 +171,8 @@ void FixSPHSoilRefine::init()
 
 void FixSPHSoilRefine::setup(int)
 {
+  // (after a restart each rank knows its own atoms' easing: ease() needs all ranks to agree)
+  MPI_Allreduce(MPI_IN_PLACE, &easing_until, 1, MPI_DOUBLE, MPI_MAX, world);
   if (!parameters_reported) {
     report_parameters();
     report_capacity();
@@ -217,11 +231,18 @@ void FixSPHSoilRefine::report_capacity()
 
 void FixSPHSoilRefine::report_parameters()
 {
-  // r_a = h / d of the group (largest: the conditions are strictest for it)
+  // r_a = h / d of the group (largest: the conditions are strictest for it), with the h that
+  // easing daughters (after a restart) are going to
   double ra = 0.0, ra_all = 0.0;
   for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) ra = MAX(ra, splitter->smoothing_over_spacing(i));
+    if (atom->mask[i] & groupbit) {
+      const double h = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"))->smoothing_length[i];
+      const double eased = ease_since[i] >= 0.0 ? ease_target[i] / h : 1.0;
+      ra = MAX(ra, eased * splitter->smoothing_over_spacing(i));
+    }
   MPI_Allreduce(&ra, &ra_all, 1, MPI_DOUBLE, MPI_MAX, world);
+  birth_ratio = splitter->smoothing_ratio;
+  if (ease_time > 0.0 && ra_all > 0.0) choose_birth_ratio(ra_all);
   if (comm->me != 0 || !(ra_all > 0.0)) return;
 
   using namespace SPHSoil;
@@ -244,6 +265,15 @@ void FixSPHSoilRefine::report_parameters()
   };
   utils::logmesg(lmp, "fix sph/soil/refine: splits {} up to level {}\n", selection->describe(),
                  maxlevel);
+  if (ease_time > 0.0) {
+    const auto born = split_stress_defect(dimension, eps, birth_ratio, ra_all, kernel);
+    const auto eased = split_stress_defect(dimension, eps, alpha, ra_all, kernel);
+    utils::logmesg(lmp, "fix sph/soil/refine: daughters born with smoothing {:.2f} (a split's push on "
+                        "its neighbours and daughters at most {:.3g} p/(rho h), against {:.3g} with "
+                        "{}), eased to {} over {} time units\n", birth_ratio,
+                   MAX(born.neighbours, born.daughters), MAX(eased.neighbours, eased.daughters),
+                   alpha, alpha, ease_time);
+  }
   utils::logmesg(lmp, "fix sph/soil/refine: separation {} smoothing {} with h/d = {:.4g}: kernel "
                       "gradient error E_a = {:.4g}, E_b = {:.4g} (1/d^{}); d_ij/d_ref = 1.0: {}, "
                       "0.85: {}{}\n", eps, alpha, ra_all, error_a, error_b, dimension,
@@ -343,12 +373,21 @@ void FixSPHSoilRefine::born(const std::vector<int> &parents, int nlocal_before)
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int others = SPHSoil::daughter_count(domain->dimension) - 1;
   const double now = SPHSoilFixes::elapsed_time(update);
+  // (with ease T: born with the smoothing ratio of the least defect, eased from now on; the
+  // neighbour lists built after the split see the birth h, which only shrinks from there)
+  const double widen = ease_time > 0.0 ? birth_ratio / splitter->smoothing_ratio : 1.0;
   auto set = [&](int j, tagint parent_tag) {
     for (int k = 0; k < 6; k++) strain_at_birth[j][k] = avec->total_strain[j][k];
     quiet_since[j] = now;
     const int level = avec->level[j];
     if (level >= 1 && level <= maxlevel) family[j][level - 1] = (double) parent_tag;
+    if (ease_time > 0.0) {
+      ease_target[j] = avec->smoothing_length[j];
+      avec->smoothing_length[j] *= widen;
+      ease_since[j] = now;
+    }
   };
+  if (ease_time > 0.0) easing_until = now + ease_time;
   for (size_t n = 0; n < parents.size(); n++) {
     const int i = parents[n];
     set(i, atom->tag[i]);
@@ -445,6 +484,8 @@ void FixSPHSoilRefine::grow_arrays(int nmax)
   memory->grow(strain_at_birth, nmax, 6, "sph/soil/refine:strain_at_birth");
   memory->grow(quiet_since, nmax, "sph/soil/refine:quiet_since");
   memory->grow(family, nmax, maxlevel, "sph/soil/refine:family");
+  memory->grow(ease_since, nmax, "sph/soil/refine:ease_since");
+  memory->grow(ease_target, nmax, "sph/soil/refine:ease_target");
 }
 
 void FixSPHSoilRefine::copy_arrays(int i, int j, int /*delflag*/)
@@ -452,6 +493,8 @@ void FixSPHSoilRefine::copy_arrays(int i, int j, int /*delflag*/)
   for (int k = 0; k < 6; k++) strain_at_birth[j][k] = strain_at_birth[i][k];
   quiet_since[j] = quiet_since[i];
   for (int l = 0; l < maxlevel; l++) family[j][l] = family[i][l];
+  ease_since[j] = ease_since[i];
+  ease_target[j] = ease_target[i];
 }
 
 void FixSPHSoilRefine::set_arrays(int i)
@@ -459,6 +502,8 @@ void FixSPHSoilRefine::set_arrays(int i)
   for (int k = 0; k < 6; k++) strain_at_birth[i][k] = 0.0;
   quiet_since[i] = -1.0;
   for (int l = 0; l < maxlevel; l++) family[i][l] = 0.0;
+  ease_since[i] = -1.0;
+  ease_target[i] = 0.0;
 }
 
 int FixSPHSoilRefine::pack_exchange(int i, double *buf)
@@ -467,6 +512,8 @@ int FixSPHSoilRefine::pack_exchange(int i, double *buf)
   for (int k = 0; k < 6; k++) buf[m++] = strain_at_birth[i][k];
   buf[m++] = quiet_since[i];
   for (int l = 0; l < maxlevel; l++) buf[m++] = family[i][l];
+  buf[m++] = ease_since[i];
+  buf[m++] = ease_target[i];
   return m;
 }
 
@@ -476,6 +523,8 @@ int FixSPHSoilRefine::unpack_exchange(int nlocal, double *buf)
   for (int k = 0; k < 6; k++) strain_at_birth[nlocal][k] = buf[m++];
   quiet_since[nlocal] = buf[m++];
   for (int l = 0; l < maxlevel; l++) family[nlocal][l] = buf[m++];
+  ease_since[nlocal] = buf[m++];
+  ease_target[nlocal] = buf[m++];
   return m;
 }
 
@@ -492,11 +541,18 @@ void FixSPHSoilRefine::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   const double *buf = &extra[nlocal][m];
-  // (the layout of pack_exchange() after the count: strain at birth, quiet since, families)
-  const int stored_levels = static_cast<int>(buf[0]) - 1 - per_atom_columns() + maxlevel;
+  // (the layout of pack_exchange() after the count: strain at birth, quiet since, families,
+  // ease since and target; files of before easing (2026-12-06) end with the families: with the
+  // same maxlevel they are told by their count)
+  const int values = static_cast<int>(buf[0]) - 1;
+  const bool with_easing = values != 7 + maxlevel;
+  const int stored_levels = values - 7 - (with_easing ? 2 : 0);
   for (int k = 0; k < 6; k++) strain_at_birth[nlocal][k] = buf[1 + k];
   quiet_since[nlocal] = buf[1 + 6];
   for (int l = 0; l < maxlevel; l++) family[nlocal][l] = l < stored_levels ? buf[1 + 7 + l] : 0.0;
+  ease_since[nlocal] = with_easing ? buf[1 + 7 + stored_levels] : -1.0;
+  ease_target[nlocal] = with_easing ? buf[1 + 7 + stored_levels + 1] : 0.0;
+  if (ease_since[nlocal] >= 0.0) easing_until = MAX(easing_until, ease_since[nlocal] + ease_time);
 }
 
 int FixSPHSoilRefine::maxsize_restart()
@@ -524,7 +580,8 @@ void FixSPHSoilRefine::mark_quiet()
   const double now = SPHSoilFixes::elapsed_time(update);
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    if (!selection->quiet(i, merge_time))
+    // (a daughter still easing is not: the merge takes its h for alpha_r times its parent's)
+    if (!selection->quiet(i, merge_time) || ease_since[i] >= 0.0)
       quiet_since[i] = -1.0;
     else if (quiet_since[i] < 0.0)
       quiet_since[i] = now;
@@ -548,11 +605,21 @@ void FixSPHSoilRefine::merge()
 
 int FixSPHSoilRefine::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
+  if (forwarding_h) {
+    const double *h = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"))->smoothing_length;
+    for (int k = 0; k < n; k++) buf[k] = h[list[k]];
+    return n;
+  }
   return merger->pack_forward_comm(n, list, buf);
 }
 
 void FixSPHSoilRefine::unpack_forward_comm(int n, int first, double *buf)
 {
+  if (forwarding_h) {
+    double *h = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"))->smoothing_length;
+    for (int k = 0; k < n; k++) h[first + k] = buf[k];
+    return;
+  }
   merger->unpack_forward_comm(n, first, buf);
 }
 
@@ -564,4 +631,57 @@ int FixSPHSoilRefine::pack_reverse_comm(int n, int first, double *buf)
 void FixSPHSoilRefine::unpack_reverse_comm(int n, int *list, double *buf)
 {
   merger->unpack_reverse_comm(n, list, buf);
+}
+
+/* ----------------------------------------------------------------------
+   ease T: each step (after the positions' update, before the forces), the smoothing length of
+   the daughters born within the last T goes
+   linearly from birth_ratio h_parent (at birth) to alpha_r h_parent (at T), and the ghosts
+   follow. The split's defect (doc/theory.rst 5.11) then grows from its least to its value over T,
+   as a load applied slowly, instead of at once. Collective: easing_until is the same on all
+   ranks (splits happen at the same steps everywhere).
+------------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::ease()
+{
+  if (ease_time <= 0.0) return;
+  const double now = SPHSoilFixes::elapsed_time(update);
+  if (!(now <= easing_until)) return;
+  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  const double widen = birth_ratio / splitter->smoothing_ratio;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (ease_since[i] < 0.0) continue;
+    const double remaining = 1.0 - (now - ease_since[i]) / ease_time;
+    if (remaining <= 0.0) {
+      avec->smoothing_length[i] = ease_target[i];
+      ease_since[i] = -1.0;
+    } else {
+      avec->smoothing_length[i] = ease_target[i] * (1.0 + (widen - 1.0) * remaining);
+    }
+  }
+  forwarding_h = true;
+  SPHSoilCompat::forward_comm_fix(comm, this);
+  forwarding_h = false;
+}
+
+/* ----------------------------------------------------------------------
+   the smoothing ratio at birth with ease T: in [alpha_r, 1], the one whose split is the least
+   felt by a soil at rest (split_stress_defect(): the larger of the pushes on the coarse
+   neighbours and on the daughters), on a grid of 0.01; the same on all ranks
+------------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::choose_birth_ratio(double ra)
+{
+  const double eps = splitter->separation, alpha = splitter->smoothing_ratio;
+  double best = HUGE_VAL;
+  birth_ratio = alpha;
+  for (int k = 0; alpha + 0.01 * k <= 1.0 + 1e-12; k++) {
+    const double ratio = alpha + 0.01 * k;
+    const auto d = SPHSoil::split_stress_defect(domain->dimension, eps, ratio, ra, splitter->kernel_kind());
+    const double worst = MAX(d.neighbours, d.daughters);
+    if (worst < best) {
+      best = worst;
+      birth_ratio = ratio;
+    }
+  }
 }

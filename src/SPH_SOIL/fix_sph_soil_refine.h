@@ -40,13 +40,14 @@ class FixSPHSoilRefine : public Fix {
   int setmask() override;
   void init() override;
   void setup(int) override;
+  void post_integrate() override;
   void end_of_step() override;
   double compute_vector(int) override;
   void post_run() override;
   void write_restart(FILE *) override;
   void restart(char *) override;
 
-  // per-atom: the total strain at the particle's birth, quiet since, families
+  // per-atom: the total strain at the particle's birth, quiet since, families, easing
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
   void set_arrays(int) override;
@@ -57,7 +58,8 @@ class FixSPHSoilRefine : public Fix {
   int maxsize_restart() override;
   int size_restart(int) override;
   double memory_usage() override;
-  // the merge's communication: its flags and state to the ghosts, deletions to the owners
+  // the merge's communication: its flags and state to the ghosts, deletions to the owners; and
+  // while daughters ease, their smoothing lengths to the ghosts
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;
@@ -65,12 +67,18 @@ class FixSPHSoilRefine : public Fix {
 
  protected:
   int maxlevel;          // particles at this level are not split again
-  std::unique_ptr<class SPHSoilRefineSelection> selection;    // criterion, region
+  std::unique_ptr<class SPHSoilRefineSelection> selection;    // criterion, region, buffer
   std::unique_ptr<class SPHSoilRefineSplitter> splitter;
   std::unique_ptr<class SPHSoilRefineBalance> balance;
   // per atom: the history of RefineHistory (sph_soil_refine_criterion.h)
   double **strain_at_birth, *quiet_since, **family;
   double merge_time;           // merge: siblings quiet for this time merge (0: no merging)
+  // ease T: daughters are born with the smoothing ratio of the split's least stress defect
+  // (birth_ratio) and their h goes linearly to alpha_r h_parent over the time T (0: no easing)
+  double ease_time = 0.0, birth_ratio = 0.0;
+  double *ease_since = nullptr, *ease_target = nullptr;    // per atom: birth (-1: done), final h
+  double easing_until = -1.0;    // the time the last daughters finish easing (all ranks)
+  bool forwarding_h = false;     // the forward communication in progress is ease()'s
   bigint total_merged;         // merges since the fix was defined (families and clusters)
   bigint total_clusters = 0;   // of them, clusters of orphans
   class FixSPHSoil *integrator;
@@ -85,7 +93,7 @@ class FixSPHSoilRefine : public Fix {
   bigint run_unbalanced;      // the most at a check of this run
   bigint run_split, run_forced;    // split in this run; of them, split for the balance only
 
-  int per_atom_columns() const { return 6 + 1 + maxlevel; }
+  int per_atom_columns() const { return 6 + 1 + maxlevel + 2; }
   RefineHistory history() const
   {
     RefineHistory h;    // (not an aggregate in C++11, where LAMMPS 29Sep2021 compiles)
@@ -95,6 +103,8 @@ class FixSPHSoilRefine : public Fix {
     return h;
   }
   void born(const std::vector<int> &parents, int nlocal_before);
+  void ease();
+  void choose_birth_ratio(double ra);
   void mark_quiet();
   void merge();
   std::unique_ptr<class SPHSoilRefineMerger> merger;    // with merge T

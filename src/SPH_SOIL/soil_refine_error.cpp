@@ -6,7 +6,9 @@
 
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 using namespace SPHSoil;
 
@@ -198,6 +200,59 @@ SplitStressDefect SPHSoil::split_stress_defect(int dimension, double separation,
   gradient_difference(refined, x, diff);
   for (int a = 0; a < D; a++) sum[a] -= diff[a];
   result.daughters = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+  // a = -(2 p / rho) sum_j V_j grad W: in units of p / (rho h_p)
+  result.neighbours *= 2.0 * hp;
+  result.daughters *= 2.0 * hp;
+  return result;
+}
+
+SplitStressDefect SPHSoil::level_edge_defect(int dimension, double separation, double smoothing_ratio,
+                                             double r_a, KernelKind kernel)
+{
+  const int D = dimension, normal = D - 1;
+  const double hp = r_a, hd = smoothing_ratio * r_a, vd = 1.0 / (D == 3 ? 8.0 : 4.0);
+  const int reach = (int) std::ceil(kernel_support(kernel) * hp) + 2;
+  const int kmax = D == 3 ? reach : 0;
+  // the daughters' offsets from their site: the corners of a square (cube) of side eps_r
+  std::vector<std::array<double, 3>> corners;
+  for (int c = 0; c < (1 << D); c++) {
+    std::array<double, 3> o{0.0, 0.0, 0.0};
+    for (int a = 0; a < D; a++) o[a] = (c >> a & 1) ? 0.5 * separation : -0.5 * separation;
+    corners.push_back(o);
+  }
+  // sum_j V_j grad W(r_ij, (h_i + h_j)/2) at x (smoothing length hi), over the coarse sites below
+  // the edge (normal coordinate < 0) and the daughters above it, x itself left out
+  auto lattice_sum = [&](const double x[3], double hi) {
+    double sum[3] = {0.0, 0.0, 0.0};
+    auto add = [&](const double y[3], double volume, double hj) {
+      const double dx[3] = {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+      const double r = std::sqrt(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2]);
+      if (r < 1e-12) return;
+      const double f = volume * kernel_gradient_factor(kernel, D, r, 0.5 * (hi + hj));
+      for (int a = 0; a < D; a++) sum[a] += f * dx[a];
+    };
+    for (int i = -reach; i <= reach; i++)
+      for (int j = -reach; j <= reach; j++)
+        for (int k = -kmax; k <= kmax; k++) {
+          const double site[3] = {(double) i, (double) j, (double) k};
+          if (site[normal] < 0.0) {
+            add(site, 1.0, hp);
+          } else {
+            for (const auto &o : corners) {
+              const double y[3] = {site[0] + o[0], site[1] + o[1], site[2] + o[2]};
+              add(y, vd, hd);
+            }
+          }
+        }
+    return std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+  };
+  SplitStressDefect result{0.0, 0.0};
+  const double coarse[3] = {0.0, D == 2 ? -1.0 : 0.0, D == 3 ? -1.0 : 0.0};
+  result.neighbours = lattice_sum(coarse, hp);
+  for (const auto &o : corners) {
+    const double y[3] = {o[0], o[1], o[2]};
+    result.daughters = std::max(result.daughters, lattice_sum(y, hd));
+  }
   // a = -(2 p / rho) sum_j V_j grad W: in units of p / (rho h_p)
   result.neighbours *= 2.0 * hp;
   result.daughters *= 2.0 * hp;

@@ -64,6 +64,15 @@ struct SplitStressDefect {
 SplitStressDefect split_stress_defect(int dimension, double separation, double smoothing_ratio,
                                       double r_a, KernelKind kernel = KernelKind());
 
+// The same defect at the edge of a refined zone (doc/validation.rst, the slope): the lattice of
+// spacing 1 (h_p = r_a) below a plane, every site above it split by (separation,
+// smoothing_ratio), in a uniform isotropic stress -p. The largest acceleration of the coarse
+// row next to the edge and of the daughters of the first refined row, in units of p / (rho h_p)
+// (times (z / h_p) g at depth z); both vanish far from the edge. A buffer (fix sph/soil/refine
+// buffer) keeps this edge away from the particles that shear.
+SplitStressDefect level_edge_defect(int dimension, double separation, double smoothing_ratio,
+                                    double r_a, KernelKind kernel = KernelKind());
+
 // Swegle's criterion (W'' < 0 for r < q* h, q* the kernel's INFLECTION: 2/3 for the cubic
 // spline, the paper's case, 1/2 for Wendland C2) applied to a split, for a refined particle i
 // and a neighbour j at distance d_ij = neighbour_distance * d_ref:

@@ -6,10 +6,14 @@
 
 #include "atom.h"
 #include "atom_vec_sph_soil.h"
+#include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "memory.h"
 #include "region.h"
+#include "soil_neighbours.h"
 #include "sph_soil_compat.h"
+#include "sph_soil_input.h"
 #include "sph_soil_refine_criteria.h"
 #include "utils.h"
 
@@ -18,7 +22,7 @@ using namespace LAMMPS_NS;
 std::string SPHSoilRefineSelection::keywords()
 {
   const std::string own = refine_criterion_keywords();
-  return "criterion, region" + (own.empty() ? "" : ", " + own);
+  return "criterion, region, buffer" + (own.empty() ? "" : ", " + own);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -28,6 +32,11 @@ SPHSoilRefineSelection::SPHSoilRefineSelection(LAMMPS *lmp, const std::string &c
     Pointers(lmp), command(command), criterion_word(default_criterion),
     criterion(make_refine_criterion(lmp, command, default_criterion)), region(nullptr)
 {
+}
+
+SPHSoilRefineSelection::~SPHSoilRefineSelection()
+{
+  memory->destroy(shared);
 }
 
 bool SPHSoilRefineSelection::parse_keyword(const std::string &keyword, const char *value)
@@ -42,6 +51,11 @@ bool SPHSoilRefineSelection::parse_keyword(const std::string &keyword, const cha
     region_id = value;
     if (!SPHSoilCompat::find_region(domain, region_id))
       error->all(FLERR, "{} region {} does not exist", command, region_id);
+  } else if (keyword == "buffer") {
+    // up to one support: a wanted ghost is then within the ghost cut-off (the neighbour
+    // list's, at least the support of the largest h) of the owned particles it buffers
+    buffer = SPHSoilInput::number(FLERR, lmp, command + " buffer", value,
+                                  SPHSoilInput::between(0.0, 1.0, false, false));
   } else if (criterion->parse_keyword(command, keyword, value)) {
     criterion_keyword = keyword;
   } else {
@@ -56,8 +70,9 @@ bool SPHSoilRefineSelection::parse_keyword(const std::string &keyword, const cha
   return true;
 }
 
-void SPHSoilRefineSelection::init()
+void SPHSoilRefineSelection::init(double kernel_support)
 {
+  support = kernel_support;
   region = nullptr;
   if (!region_id.empty()) {
     region = SPHSoilCompat::find_region(domain, region_id);
@@ -74,18 +89,78 @@ std::vector<int> SPHSoilRefineSelection::parents(int groupbit, int maxlevel, con
   if (region) region->prematch();
   if (may_split) may_split->assign(atom->nlocal, 0);
   std::vector<int> selected;
+  std::vector<char> wanted, allowed;
+  if (buffer > 0.0) {
+    wanted.assign(atom->nlocal, 0);
+    allowed.assign(atom->nlocal, 0);
+  }
   double **x = atom->x;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    if (maxlevel > 0 && avec->level[i] >= maxlevel) continue;
     if (region && !region->match(x[i][0], x[i][1], x[i][2])) continue;
-    if (may_split) (*may_split)[i] = 1;
-    if (criterion->wants(i)) selected.push_back(i);
+    const bool below_limit = maxlevel <= 0 || avec->level[i] < maxlevel;
+    if (below_limit && may_split) (*may_split)[i] = 1;
+    // (the criterion is asked at maxlevel too only where a buffer needs the answer)
+    if (buffer > 0.0) {
+      allowed[i] = below_limit;
+      wanted[i] = criterion->wants(i);
+      if (below_limit && wanted[i]) selected.push_back(i);
+    } else if (below_limit && criterion->wants(i)) {
+      selected.push_back(i);
+    }
   }
+  in_buffer.clear();
+  if (buffer > 0.0) widen(groupbit, wanted, allowed, selected);
   return selected;
+}
+
+/* ----------------------------------------------------------------------
+   the buffer: the wanted particles' flags and levels to the ghosts, then each wanted particle j
+   (owned or ghost) marks the owned particles k of the group whose b support h_k reaches it and
+   that are not finer than j; those that may split and are not selected yet join `selected`
+------------------------------------------------------------------------- */
+
+void SPHSoilRefineSelection::widen(int groupbit, const std::vector<char> &wanted,
+                                   const std::vector<char> &may_split, std::vector<int> &selected)
+{
+  auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  if (atom->nmax > shared_rows) {
+    shared_rows = atom->nmax;
+    memory->destroy(shared);
+    memory->create(shared, shared_rows, 2, "sph/soil/refine:buffer");
+  }
+  for (int i = 0; i < nlocal; i++) {
+    shared[i][0] = wanted[i];
+    shared[i][1] = avec->level[i];
+  }
+  comm->forward_comm_array(2, shared);
+
+  std::vector<int> members;
+  for (int i = 0; i < nlocal; i++)
+    if (atom->mask[i] & groupbit) members.push_back(i);
+  const double *h = avec->smoothing_length;
+  SPHSoil::SmoothingClassGrids near;
+  near.build(atom->x, h, members, domain->dimension, support);
+  in_buffer.assign(nlocal, 0);
+  double **x = atom->x;
+  const double reach2 = buffer * support * buffer * support;
+  for (int j = 0; j < nall; j++) {
+    if (shared[j][0] == 0.0) continue;
+    const int level_j = (int) shared[j][1];
+    // the members whose support reaches x_j, of them those within b support h_k
+    near.for_each_within(x[j], 0.0, [&](int k, double r2) {
+      if (k != j && r2 < reach2 * h[k] * h[k] && avec->level[k] <= level_j) in_buffer[k] = 1;
+    });
+  }
+  std::vector<char> chosen(nlocal, 0);
+  for (int i : selected) chosen[i] = 1;
+  for (int k = 0; k < nlocal; k++)
+    if (in_buffer[k] && may_split[k] && !chosen[k]) selected.push_back(k);
 }
 
 std::string SPHSoilRefineSelection::describe() const
 {
-  return criterion->describe() + (region_id.empty() ? "" : ", in region " + region_id);
+  return criterion->describe() + (region_id.empty() ? "" : ", in region " + region_id) +
+      (buffer > 0.0 ? fmt::format(", and within {} kernel support(s) of them", buffer) : "");
 }

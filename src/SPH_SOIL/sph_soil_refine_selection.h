@@ -1,7 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
    SPH_SOIL package for LAMMPS: the particles a refinement splits: group,
-   region, level limit and criterion (sph_soil_refine_criteria.h), with one
-   parser for the keywords that fix sph/soil/refine and sph_soil/refine share.
+   region, level limit and criterion (sph_soil_refine_criteria.h), widened by
+   a buffer around the particles the criterion wants, with one parser for the
+   keywords that fix sph/soil/refine and sph_soil/refine share.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SPH_SOIL_REFINE_SELECTION_H
@@ -19,22 +20,33 @@ class SPHSoilRefineSelection : protected Pointers {
  public:
   // `command` as the user types it ("fix sph/soil/refine"), `default_criterion` its default
   SPHSoilRefineSelection(LAMMPS *lmp, const std::string &command, const std::string &default_criterion);
+  ~SPHSoilRefineSelection() override;
 
-  // criterion, region and the criterion's own keywords; false if `keyword` is none of them
+  // criterion, region, buffer and the criterion's own keywords; false if `keyword` is none of
+  // them
   bool parse_keyword(const std::string &keyword, const char *value);
-  // its keywords and every criterion's own, for messages: "criterion, region, threshold"
+  // its keywords and every criterion's own, for messages: "criterion, region, buffer, threshold"
   static std::string keywords();
-  // at init: the region (it may have been redefined) and the criterion's needs
-  void init();
+  // at init: the region (it may have been redefined), the criterion's needs, and the kernel's
+  // support (in h: the buffer's unit)
+  void init(double kernel_support);
   // owned particles of `groupbit` below `maxlevel` (0: no limit) that the region contains and
-  // the criterion wants; collective (the criterion may evaluate a variable). `may_split`, if
-  // given, gets per owned particle whether it may split (group, level, region) whatever the
-  // criterion says.
+  // the criterion wants, and with a buffer b those whose kernel's support times b (b support
+  // h_k, their own h: the reach of their kernel) reaches a particle j of the group and region
+  // that the criterion wants (at any level, maxlevel included), if they are not finer than j;
+  // collective (the criterion may
+  // evaluate a variable; with a buffer the ghosts must be current). `may_split`, if given,
+  // gets per owned particle whether it may split (group, level, region) whatever the criterion
+  // says.
   std::vector<int> parents(int groupbit, int maxlevel, const RefineHistory &history = RefineHistory(),
                            std::vector<char> *may_split = nullptr);
   // whether owned particle i is quiet enough to merge (after parents(), which prepares the
-  // criterion)
-  bool quiet(int i, double hold_time) const { return criterion->quiet(i, hold_time); }
+  // criterion): the criterion says so, and it is not in the buffer of a particle the criterion
+  // wants (else a buffered particle would merge back and split again)
+  bool quiet(int i, double hold_time) const
+  {
+    return !(i < (int) in_buffer.size() && in_buffer[i]) && criterion->quiet(i, hold_time);
+  }
   std::string describe() const;
 
  private:
@@ -44,6 +56,15 @@ class SPHSoilRefineSelection : protected Pointers {
   std::unique_ptr<SPHSoilRefineCriterion> criterion;
   std::string region_id;
   class Region *region;
+  double buffer = 0.0;              // in kernel supports of the wanted particle
+  double support = 2.0;             // the kernel's support in h (init)
+  std::vector<char> in_buffer;      // per owned particle, at the last parents()
+  double **shared = nullptr;        // wanted flags and levels to the ghosts
+  int shared_rows = 0;
+  // the owned particles within the buffer of `wanted` (owned and, after a forward
+  // communication, ghost flags), and those of them that may split
+  void widen(int groupbit, const std::vector<char> &wanted, const std::vector<char> &may_split,
+             std::vector<int> &selected);
 };
 
 }    // namespace LAMMPS_NS

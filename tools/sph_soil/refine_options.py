@@ -1,8 +1,9 @@
 """The refinement options of the studies that bisect a failure (vertical_cut, strength_reduction):
-the command line's --refine, --stepping, --criterion, --threshold, --every, --balance and
---split, the input variables they set (examples/vertical_cut and examples/slope read the same
-names: refine, stepping, criterion, threshold, check, balance, separation, smoothing), a directory tag and a title per configuration,
-and the fields that describe it in a JSON summary."""
+the command line's --refine, --stepping, --criterion, --threshold, --every, --balance, --buffer,
+--ease and --split, the input variables they set (examples/vertical_cut and examples/slope read
+the same names: refine, stepping, criterion, threshold, check, balance, buffer, ease, separation,
+smoothing), a directory tag and a title per configuration, and the fields that describe it in a
+JSON summary."""
 
 
 def add_arguments(p, every):
@@ -21,6 +22,12 @@ def add_arguments(p, every):
                    help='with --refine: balance the ranks\' work (fix balance weighted by step_period)')
     p.add_argument('--threshold', type=float, default=None,
                    help='with --refine: the criterion\'s threshold (the input\'s default without it)')
+    p.add_argument('--buffer', type=float, default=None,
+                   help='with --refine: also split the particles whose kernel reaches, within this many '
+                        'of its supports (0 to 1), one the criterion wants (the input\'s default without it)')
+    p.add_argument('--ease', type=float, default=None,
+                   help='with --refine: daughters born with the smoothing ratio the soil least feels, eased to '
+                        'the level\'s h over this time (s)')
     p.add_argument('--split', type=float, nargs=2, default=None, metavar=('EPS', 'ALPHA'),
                    help='with --refine: the daughters\' separation and smoothing ratio (the input\'s '
                         'default without it)')
@@ -34,6 +41,8 @@ def variables(args):
     return [('refine', str(args.refine)), ('stepping', args.stepping), ('criterion', args.criterion),
             ('check', str(args.every)), ('balance', '1' if args.balance else '0')] + \
         ([('threshold', f'{args.threshold:g}')] if args.threshold is not None else []) + \
+        ([('buffer', f'{args.buffer:g}')] if args.buffer is not None else []) + \
+        ([('ease', f'{args.ease:g}')] if args.ease is not None else []) + \
         ([('separation', f'{args.split[0]:g}'), ('smoothing', f'{args.split[1]:g}')] if args.split else [])
 
 
@@ -50,6 +59,10 @@ def tag(args):
         t += f'_N{args.every}'
     if args.balance:
         t += '_balanced'
+    if args.buffer is not None:
+        t += f'_buffer{args.buffer:g}'
+    if args.ease is not None:
+        t += f'_ease{args.ease:g}'
     if args.split:
         t += f'_split{args.split[0]:g}_{args.split[1]:g}'
     return t
@@ -61,6 +74,8 @@ def title(args):
         return ''
     return (f', refined {"once" if args.refine == 1 else f"{args.refine} levels"}'
             f'{", a step per level" if args.stepping == "level" else ""}'
+            f'{f", buffer {args.buffer:g}" if args.buffer is not None else ""}'
+            f'{f", eased over {args.ease:g} s" if args.ease is not None else ""}'
             f'{f", split {args.split[0]:g} / {args.split[1]:g}" if args.split else ""}')
 
 
@@ -71,4 +86,5 @@ def summary(args, spacing):
             'stepping': args.stepping if args.refine else None,
             'criterion': args.criterion if args.refine else None, 'threshold': args.threshold,
             'every': args.every if args.refine else None, 'balanced': bool(args.refine and args.balance),
+            'buffer': args.buffer if args.refine else None, 'ease': args.ease if args.refine else None,
             'split': args.split if args.refine else None}

@@ -198,6 +198,11 @@ def test_bisection_summary_and_refinement_options():
     args = p.parse_args(['vertical-cut', '--refine', '--split', '0.4', '0.9'])
     assert refine_options.variables(args)[-2:] == [('separation', '0.4'), ('smoothing', '0.9')]
     assert refine_options.tag(args) == '_refined_split0.4_0.9' and refine_options.summary(args, 1.0)['split'] == [0.4, 0.9]
+    args = p.parse_args(['strength-reduction', '--refine', '--buffer', '1'])
+    assert ('buffer', '1') in refine_options.variables(args) and refine_options.tag(args) == '_refined_buffer1'
+    assert refine_options.summary(args, 0.5)['buffer'] == 1.0 and ', buffer 1' in refine_options.title(args)
+    args = p.parse_args(['strength-reduction', '--refine', '--ease', '0.05'])
+    assert ('ease', '0.05') in refine_options.variables(args) and refine_options.tag(args) == '_refined_ease0.05'
 
 
 def test_showcase_compares_with_the_finest_uniform_run(tmp_path):
@@ -241,8 +246,8 @@ def test_showcase_runs_the_missing_configurations(tmp_path, monkeypatch):
     seen = []
 
     def fake_main(args):
-        seen.append((args.d, args.refine, args.split, args.low, args.high, args.steps))
-        if args.split:
+        seen.append((args.d, args.refine, args.buffer, args.low, args.high, args.steps))
+        if args.buffer == 0:
             raise SystemExit('strength_reduction: [1.25, 1.5] is not a bracket')
     monkeypatch.setattr(strength_reduction, 'main', fake_main)
     work = tmp_path / 'work'
@@ -252,8 +257,8 @@ def test_showcase_runs_the_missing_configurations(tmp_path, monkeypatch):
         'half_width': 0.0625, 'wall_seconds_all_runs': 60.0}))
     cli.main(['showcase', 'slope', '--run', '--workdir', str(work), '--doc', str(tmp_path / 'doc')])
     names = [name for name, _, _ in showcase.SHOWCASES['slope']['configurations']]
-    assert len(seen) == len(names) - 1 and seen[0][:3] == (0.5, 1, None)
-    assert all(s[3:] == (1.25, 1.5, 1) for s in seen) and [0.4, 0.9] in [s[2] for s in seen]
+    assert len(seen) == len(names) - 1 and seen[0][:3] == (0.25, 0, None)
+    assert all(s[3:] == (1.25, 1.5, 1) for s in seen) and 0.0 in [s[2] for s in seen]
 
 
 def test_landslide_deposit_by_volume():
