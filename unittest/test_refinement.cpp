@@ -852,6 +852,30 @@ TEST_F(Refinement, ABufferWidensAroundWantedParticlesAtMaxlevel)
   EXPECT_EQ(deepest, 1);
 }
 
+// With merge T, the daughters in the buffer of a wanted particle are not quiet while their
+// parent's kernel would reach it (else they would merge back, and their parent, in the buffer
+// again, split at the next check: a cycle of the hold time); once nothing is wanted they merge.
+TEST_F(Refinement, BufferedDaughtersDoNotMergeWhileTheirParentWouldBeBuffered)
+{
+  patch(2, 10, false);
+  HIDE_OUTPUT([&] {
+    command("variable on equal 1");
+    command("variable centre atom \"v_on && abs(x-0.055) < 0.003 && abs(y-0.055) < 0.003\"");
+    command("fix integrate all sph/soil");
+    command("timestep 1e-6");
+    command("fix refine all sph/soil/refine 1 maxlevel 1 criterion v_centre buffer 1 merge 5e-6");
+    command("run 30 post no");
+  });
+  EXPECT_EQ(lmp->atom->natoms, 100 + 3 * 21);
+  EXPECT_EQ(fix_vector("refine", 5), 0.0);    // merges (after split, total, 2 levels, unbalanced)
+  HIDE_OUTPUT([&] {
+    command("variable on equal 0");
+    command("run 30 post no");
+  });
+  EXPECT_EQ(lmp->atom->natoms, 100);
+  EXPECT_EQ(fix_vector("refine", 5), 21.0);
+}
+
 // Computes that build a neighbour list of their own (rdf, property/local) at the steps where
 // particles split: the split leaves the ghosts rebuilt and LAMMPS's lists valid (before, the
 // occasional list's build crashed at such a step), and they see the daughters.

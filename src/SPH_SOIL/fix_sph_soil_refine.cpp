@@ -135,7 +135,7 @@ void FixSPHSoilRefine::post_integrate()
 void FixSPHSoilRefine::init()
 {
   splitter->init();
-  selection->init(SPHSoil::kernel_support(splitter->kernel_kind()));
+  selection->init(SPHSoil::kernel_support(splitter->kernel_kind()), splitter->smoothing_ratio);
 
   integrator = nullptr;
   for (int ifix = 0; ifix < modify->nfix && !integrator; ifix++)

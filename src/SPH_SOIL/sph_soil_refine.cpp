@@ -53,7 +53,7 @@ void SPHSoilRefine::command(int narg, char **arg)
   if (comm->me == 0) utils::logmesg(lmp, "System init for sph_soil/refine ...\n");
   lmp->init();
   splitter.init();
-  selection.init(SPHSoil::kernel_support(splitter.kernel_kind()));
+  selection.init(SPHSoil::kernel_support(splitter.kernel_kind()), splitter.smoothing_ratio);
 
   // wall particles carry the wall geometry; splitting them would break it
   auto pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));

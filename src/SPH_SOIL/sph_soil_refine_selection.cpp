@@ -70,9 +70,10 @@ bool SPHSoilRefineSelection::parse_keyword(const std::string &keyword, const cha
   return true;
 }
 
-void SPHSoilRefineSelection::init(double kernel_support)
+void SPHSoilRefineSelection::init(double kernel_support, double ratio)
 {
   support = kernel_support;
+  smoothing_ratio = ratio;
   region = nullptr;
   if (!region_id.empty()) {
     region = SPHSoilCompat::find_region(domain, region_id);
@@ -110,6 +111,7 @@ std::vector<int> SPHSoilRefineSelection::parents(int groupbit, int maxlevel, con
     }
   }
   in_buffer.clear();
+  parent_in_buffer.clear();
   if (buffer > 0.0) widen(groupbit, wanted, allowed, selected);
   return selected;
 }
@@ -117,7 +119,10 @@ std::vector<int> SPHSoilRefineSelection::parents(int groupbit, int maxlevel, con
 /* ----------------------------------------------------------------------
    the buffer: the wanted particles' flags and levels to the ghosts, then each wanted particle j
    (owned or ghost) marks the owned particles k of the group whose b support h_k reaches it and
-   that are not finer than j; those that may split and are not selected yet join `selected`
+   that are not finer than j; those that may split and are not selected yet join `selected`.
+   And the refined particles whose parent (h_k / alpha_r, a level coarser) would be so: they do
+   not merge. (The ghosts reach the support of the largest h, and a merge needs its parent's
+   reach among them anyway: sph_soil_refine_balance.h.)
 ------------------------------------------------------------------------- */
 
 void SPHSoilRefineSelection::widen(int groupbit, const std::vector<char> &wanted,
@@ -141,16 +146,23 @@ void SPHSoilRefineSelection::widen(int groupbit, const std::vector<char> &wanted
     if (atom->mask[i] & groupbit) members.push_back(i);
   const double *h = avec->smoothing_length;
   SPHSoil::SmoothingClassGrids near;
-  near.build(atom->x, h, members, domain->dimension, support);
+  const double reach = buffer * support, parent = 1.0 / smoothing_ratio;
+  // (binned by the reach of their parent: a search from a point finds the members whose parent
+  // would reach it, each class of h in cells of its own size)
+  near.build(atom->x, h, members, domain->dimension, reach * MAX(1.0, parent));
   in_buffer.assign(nlocal, 0);
+  parent_in_buffer.assign(nlocal, 0);
   double **x = atom->x;
-  const double reach2 = buffer * support * buffer * support;
   for (int j = 0; j < nall; j++) {
     if (shared[j][0] == 0.0) continue;
     const int level_j = (int) shared[j][1];
-    // the members whose support reaches x_j, of them those within b support h_k
+    // the members whose b support h_k (or their parent's) reaches x_j
     near.for_each_within(x[j], 0.0, [&](int k, double r2) {
-      if (k != j && r2 < reach2 * h[k] * h[k] && avec->level[k] <= level_j) in_buffer[k] = 1;
+      if (k == j) return;
+      const int level_k = avec->level[k];
+      if (level_k <= level_j && r2 < reach * reach * h[k] * h[k]) in_buffer[k] = 1;
+      if (level_k >= 1 && level_k - 1 <= level_j && r2 < reach * reach * parent * parent * h[k] * h[k])
+        parent_in_buffer[k] = 1;
     });
   }
   std::vector<char> chosen(nlocal, 0);

@@ -27,9 +27,10 @@ class SPHSoilRefineSelection : protected Pointers {
   bool parse_keyword(const std::string &keyword, const char *value);
   // its keywords and every criterion's own, for messages: "criterion, region, buffer, threshold"
   static std::string keywords();
-  // at init: the region (it may have been redefined), the criterion's needs, and the kernel's
-  // support (in h: the buffer's unit)
-  void init(double kernel_support);
+  // at init: the region (it may have been redefined), the criterion's needs, the kernel's
+  // support (in h: the buffer's unit) and the split's smoothing ratio alpha_r (a daughter's
+  // parent had h / alpha_r)
+  void init(double kernel_support, double smoothing_ratio);
   // owned particles of `groupbit` below `maxlevel` (0: no limit) that the region contains and
   // the criterion wants, and with a buffer b those whose kernel's support times b (b support
   // h_k, their own h: the reach of their kernel) reaches a particle j of the group and region
@@ -41,11 +42,11 @@ class SPHSoilRefineSelection : protected Pointers {
   std::vector<int> parents(int groupbit, int maxlevel, const RefineHistory &history = RefineHistory(),
                            std::vector<char> *may_split = nullptr);
   // whether owned particle i is quiet enough to merge (after parents(), which prepares the
-  // criterion): the criterion says so, and it is not in the buffer of a particle the criterion
-  // wants (else a buffered particle would merge back and split again)
+  // criterion): the criterion says so, and the particle it would merge into would not be in
+  // the buffer of a particle the criterion wants (else it would merge back and split again)
   bool quiet(int i, double hold_time) const
   {
-    return !(i < (int) in_buffer.size() && in_buffer[i]) && criterion->quiet(i, hold_time);
+    return !(i < (int) parent_in_buffer.size() && parent_in_buffer[i]) && criterion->quiet(i, hold_time);
   }
   std::string describe() const;
 
@@ -58,7 +59,10 @@ class SPHSoilRefineSelection : protected Pointers {
   class Region *region;
   double buffer = 0.0;              // in kernel supports of the wanted particle
   double support = 2.0;             // the kernel's support in h (init)
-  std::vector<char> in_buffer;      // per owned particle, at the last parents()
+  double smoothing_ratio = 0.5;     // alpha_r (init)
+  // per owned particle, at the last parents(): within the buffer of a wanted particle, and
+  // (a refined one) with its parent's reach
+  std::vector<char> in_buffer, parent_in_buffer;
   double **shared = nullptr;        // wanted flags and levels to the ghosts
   int shared_rows = 0;
   // the owned particles within the buffer of `wanted` (owned and, after a forward
