@@ -639,14 +639,13 @@ void FixSPHSoilRefine::unpack_reverse_comm(int n, int *list, double *buf)
    linearly from birth_ratio h_parent (at birth) to alpha_r h_parent (at T), and the ghosts
    follow. The split's defect (doc/theory.rst 5.11) then grows from its least to its value over T,
    as a load applied slowly, instead of at once. Collective: easing_until is the same on all
-   ranks (splits happen at the same steps everywhere).
+   ranks (splits happen at the same steps everywhere); -1 once all have eased.
 ------------------------------------------------------------------------- */
 
 void FixSPHSoilRefine::ease()
 {
-  if (ease_time <= 0.0) return;
+  if (ease_time <= 0.0 || easing_until < 0.0) return;
   const double now = SPHSoilFixes::elapsed_time(update);
-  if (!(now <= easing_until)) return;
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const double widen = birth_ratio / splitter->smoothing_ratio;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -662,6 +661,12 @@ void FixSPHSoilRefine::ease()
   forwarding_h = true;
   SPHSoilCompat::forward_comm_fix(comm, this);
   forwarding_h = false;
+  // all eased (the last births' T is over): the time step must now suit the final h (a fixed
+  // step that does not stops here, as at a split without easing)
+  if (now >= easing_until) {
+    easing_until = -1.0;
+    integrator->particles_refined(STYLE);
+  }
 }
 
 /* ----------------------------------------------------------------------
