@@ -175,7 +175,9 @@ void PairSPHSoil::warn_coinciding()
     const double tolerance = 1.0e-6 * h[i];
     for (int jj = neighbours.first(i); jj < neighbours.end(i); jj++) {
       const int j = partners[jj];
-      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      // (in 2D the pair sums see x and y only: particles apart in z alone coincide for them)
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1],
+                   dz = domain->dimension == 3 ? x[i][2] - x[j][2] : 0.0;
       if (dx * dx + dy * dy + dz * dz >= tolerance * tolerance) continue;
       pairs++;
       if (first < 0 || tag[i] < tag[first]) {
