@@ -188,13 +188,7 @@ class Refinement : public SoilTest {
     std::map<tagint, std::vector<double>> serial;
     for (int i = 0; i < single->atom->nlocal; i++) serial[single->atom->tag[i]] = atom_state(single, i);
     delete single;
-    ASSERT_EQ(serial.size(), parallel.size());
-    for (const auto &entry : serial) {
-      const auto &p = parallel.at(entry.first);
-      for (int k : columns)
-        EXPECT_NEAR(p[k], entry.second[k], tolerance * std::fabs(entry.second[k]) + 1e-15)
-            << "atom " << entry.first << " " << state_names()[k];
-    }
+    expect_same_state(parallel, serial, tolerance, 1e-15, columns);
   }
 
   // `fixes` on the patch: 40 steps, a restart file, 40 more; then the file read back with the
@@ -221,14 +215,9 @@ class Refinement : public SoilTest {
     if (on_restart) on_restart();
     HIDE_OUTPUT([&] { command("run 40 post no"); });
     EXPECT_EQ(fix_vector("refine", 1), total_split);
-    auto restarted = gather_state(lmp);
-    ASSERT_EQ(restarted.size(), uninterrupted.size());
-    for (const auto &entry : uninterrupted) {
-      const auto &r = restarted.at(entry.first);
-      for (size_t k = 1; k < 23; k++)
-        EXPECT_NEAR(r[k], entry.second[k], 1e-12 * std::fabs(entry.second[k]) + 1e-18)
-            << "atom " << entry.first << " " << state_names()[k];
-    }
+    std::vector<int> columns;    // type to the strain (not the wall data, nor vest)
+    for (int k = 1; k < 23; k++) columns.push_back(k);
+    expect_same_state(gather_state(lmp), uninterrupted, 1e-12, 1e-18, columns);
   }
 };
 
@@ -780,14 +769,11 @@ TEST_F(Refinement, VariableCriterionSplitsExactlyWhereNonZero)
 TEST_F(Refinement, ABufferSplitsTheParticlesWithinItsReachOfAWantedParticle)
 {
   auto count = [&](const char *what, double reach, int expected_sites) {
-    int far_local = 0, far = 0;
-    for (int i = 0; i < lmp->atom->nlocal; i++) {
+    // daughters lie within d/4 (each way) of their parent's site
+    const bigint far = count_atoms(lmp, [&](int i) {
       const double *x = lmp->atom->x[i];
-      // daughters lie within d/4 (each way) of their parent's site
-      if (soil_avec(lmp)->level[i] == 1 && std::hypot(x[0] - 0.055, x[1] - 0.055) > reach + 0.0036)
-        far_local++;
-    }
-    MPI_Allreduce(&far_local, &far, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+      return soil_avec(lmp)->level[i] == 1 && std::hypot(x[0] - 0.055, x[1] - 0.055) > reach + 0.0036;
+    });
     EXPECT_EQ(lmp->atom->natoms, 100 + 3 * expected_sites) << what;
     EXPECT_EQ(far, 0) << what;
   };
@@ -846,10 +832,9 @@ TEST_F(Refinement, ABufferWidensAroundWantedParticlesAtMaxlevel)
     }
   ASSERT_EQ(sites, 20);    // (a reach of the daughters' own supports, 1.2 cm, would split 8)
   EXPECT_EQ(lmp->atom->natoms, 100 + 3 + 3 * sites);
-  int deepest_local = 0, deepest = 0;
-  for (int i = 0; i < lmp->atom->nlocal; i++) deepest_local = std::max(deepest_local, soil_avec(lmp)->level[i]);
-  MPI_Allreduce(&deepest_local, &deepest, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  EXPECT_EQ(deepest, 1);
+  // the deepest level is 1: the wanted daughters at maxlevel did not split
+  EXPECT_GT(count_atoms(lmp, [&](int i) { return soil_avec(lmp)->level[i] == 1; }), 0);
+  EXPECT_EQ(count_atoms(lmp, [&](int i) { return soil_avec(lmp)->level[i] > 1; }), 0);
 }
 
 // With merge T, the daughters in the buffer of a wanted particle are not quiet while their
@@ -985,13 +970,10 @@ TEST_F(Refinement, RestartWhileDaughtersEaseContinuesIdentically)
   expect_restart_continues({"fix integrate all sph/soil cfl 0.1",
                             "fix refine all sph/soil/refine 5 threshold 1e-8 ease 1e-3"},
                            [&] {
-                             int easing_local = 0, easing = 0;
-                             for (int i = 0; i < lmp->atom->nlocal; i++)
-                               if (soil_avec(lmp)->level[i] == 1 &&
-                                   soil_avec(lmp)->smoothing_length[i] > 0.006 * (1.0 + 1e-9))
-                                 easing_local++;
-                             MPI_Allreduce(&easing_local, &easing, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
-                             EXPECT_GT(easing, 0);
+                             EXPECT_GT(count_atoms(lmp, [&](int i) {
+                                         return soil_avec(lmp)->level[i] == 1 &&
+                                             soil_avec(lmp)->smoothing_length[i] > 0.006 * (1.0 + 1e-9);
+                                       }), 0);
                            });
 }
 

@@ -233,11 +233,11 @@ void FixSPHSoilRefine::report_parameters()
 {
   // r_a = h / d of the group (largest: the conditions are strictest for it), with the h that
   // easing daughters (after a restart) are going to
+  const double *h = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"))->smoothing_length;
   double ra = 0.0, ra_all = 0.0;
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit) {
-      const double h = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"))->smoothing_length[i];
-      const double eased = ease_since[i] >= 0.0 ? ease_target[i] / h : 1.0;
+      const double eased = ease_since[i] >= 0.0 ? ease_target[i] / h[i] : 1.0;
       ra = MAX(ra, eased * splitter->smoothing_over_spacing(i));
     }
   MPI_Allreduce(&ra, &ra_all, 1, MPI_DOUBLE, MPI_MAX, world);
@@ -375,7 +375,6 @@ void FixSPHSoilRefine::born(const std::vector<int> &parents, int nlocal_before)
   const double now = SPHSoilFixes::elapsed_time(update);
   // (with ease T: born with the smoothing ratio of the least defect, eased from now on; the
   // neighbour lists built after the split see the birth h, which only shrinks from there)
-  const double widen = ease_time > 0.0 ? birth_ratio / splitter->smoothing_ratio : 1.0;
   auto set = [&](int j, tagint parent_tag) {
     for (int k = 0; k < 6; k++) strain_at_birth[j][k] = avec->total_strain[j][k];
     quiet_since[j] = now;
@@ -383,7 +382,7 @@ void FixSPHSoilRefine::born(const std::vector<int> &parents, int nlocal_before)
     if (level >= 1 && level <= maxlevel) family[j][level - 1] = (double) parent_tag;
     if (ease_time > 0.0) {
       ease_target[j] = avec->smoothing_length[j];
-      avec->smoothing_length[j] *= widen;
+      avec->smoothing_length[j] = eased_smoothing_length(ease_target[j], 1.0);
       ease_since[j] = now;
     }
   };
@@ -647,16 +646,11 @@ void FixSPHSoilRefine::ease()
   if (ease_time <= 0.0 || easing_until < 0.0) return;
   const double now = SPHSoilFixes::elapsed_time(update);
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
-  const double widen = birth_ratio / splitter->smoothing_ratio;
   for (int i = 0; i < atom->nlocal; i++) {
     if (ease_since[i] < 0.0) continue;
     const double remaining = 1.0 - (now - ease_since[i]) / ease_time;
-    if (remaining <= 0.0) {
-      avec->smoothing_length[i] = ease_target[i];
-      ease_since[i] = -1.0;
-    } else {
-      avec->smoothing_length[i] = ease_target[i] * (1.0 + (widen - 1.0) * remaining);
-    }
+    avec->smoothing_length[i] = eased_smoothing_length(ease_target[i], remaining);
+    if (remaining <= 0.0) ease_since[i] = -1.0;
   }
   forwarding_h = true;
   SPHSoilCompat::forward_comm_fix(comm, this);
@@ -667,6 +661,12 @@ void FixSPHSoilRefine::ease()
     easing_until = -1.0;
     integrator->particles_refined(STYLE);
   }
+}
+
+double FixSPHSoilRefine::eased_smoothing_length(double final_h, double remaining) const
+{
+  const double widen = birth_ratio / splitter->smoothing_ratio;
+  return remaining <= 0.0 ? final_h : final_h * (1.0 + (widen - 1.0) * remaining);
 }
 
 /* ----------------------------------------------------------------------

@@ -105,6 +105,9 @@ class FixSPHSoilRefine : public Fix {
   void born(const std::vector<int> &parents, int nlocal_before);
   void ease();
   void choose_birth_ratio(double ra);
+  // an easing daughter's h: `remaining` (1 at birth, 0 at T) of the way from its final h to
+  // birth_ratio / alpha_r times it
+  double eased_smoothing_length(double final_h, double remaining) const;
   void mark_quiet();
   void merge();
   std::unique_ptr<class SPHSoilRefineMerger> merger;    // with merge T

@@ -6,9 +6,7 @@
 
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <vector>
 
 using namespace SPHSoil;
 
@@ -210,16 +208,13 @@ SplitStressDefect SPHSoil::level_edge_defect(int dimension, double separation, d
                                              double r_a, KernelKind kernel)
 {
   const int D = dimension, normal = D - 1;
-  const double hp = r_a, hd = smoothing_ratio * r_a, vd = 1.0 / (D == 3 ? 8.0 : 4.0);
+  const double hp = r_a, hd = smoothing_ratio * r_a;
   const int reach = (int) std::ceil(kernel_support(kernel) * hp) + 2;
   const int kmax = D == 3 ? reach : 0;
-  // the daughters' offsets from their site: the corners of a square (cube) of side eps_r
-  std::vector<std::array<double, 3>> corners;
-  for (int c = 0; c < (1 << D); c++) {
-    std::array<double, 3> o{0.0, 0.0, 0.0};
-    for (int a = 0; a < D; a++) o[a] = (c >> a & 1) ? 0.5 * separation : -0.5 * separation;
-    corners.push_back(o);
-  }
+  // the daughters' offsets from their site and their volume (the split's pattern; its
+  // symmetrised smoothing lengths are not used: each pair below takes its own)
+  const Split split = make_split(D, separation, smoothing_ratio, r_a, NeighbourSmoothing::REFINED, kernel);
+  const double vd = 1.0 / split.ndaughters;
   // sum_j V_j grad W(r_ij, (h_i + h_j)/2) at x (smoothing length hi), over the coarse sites below
   // the edge (normal coordinate < 0) and the daughters above it, x itself left out
   auto lattice_sum = [&](const double x[3], double hi) {
@@ -238,7 +233,8 @@ SplitStressDefect SPHSoil::level_edge_defect(int dimension, double separation, d
           if (site[normal] < 0.0) {
             add(site, 1.0, hp);
           } else {
-            for (const auto &o : corners) {
+            for (int d = 0; d < split.ndaughters; d++) {
+              const double *o = split.daughters[d];
               const double y[3] = {site[0] + o[0], site[1] + o[1], site[2] + o[2]};
               add(y, vd, hd);
             }
@@ -249,10 +245,8 @@ SplitStressDefect SPHSoil::level_edge_defect(int dimension, double separation, d
   SplitStressDefect result{0.0, 0.0};
   const double coarse[3] = {0.0, D == 2 ? -1.0 : 0.0, D == 3 ? -1.0 : 0.0};
   result.neighbours = lattice_sum(coarse, hp);
-  for (const auto &o : corners) {
-    const double y[3] = {o[0], o[1], o[2]};
-    result.daughters = std::max(result.daughters, lattice_sum(y, hd));
-  }
+  for (int d = 0; d < split.ndaughters; d++)
+    result.daughters = std::max(result.daughters, lattice_sum(split.daughters[d], hd));
   // a = -(2 p / rho) sum_j V_j grad W: in units of p / (rho h_p)
   result.neighbours *= 2.0 * hp;
   result.daughters *= 2.0 * hp;

@@ -6,20 +6,13 @@
 
 #include "atom.h"
 #include "atom_vec_sph_soil.h"
-#include "comm.h"
 #include "domain.h"
-#include "memory.h"
 #include "soil_neighbours.h"
 #include "soil_refine_balance.h"
 
 #include <functional>
 
 using namespace LAMMPS_NS;
-
-SPHSoilRefineBalance::~SPHSoilRefineBalance()
-{
-  memory->destroy(shared);
-}
 
 /* ---------------------------------------------------------------------- */
 
@@ -134,12 +127,8 @@ std::vector<int> SPHSoilRefineBalance::parents(const std::vector<int> &wanted,
 void SPHSoilRefineBalance::share(std::vector<int> &values)
 {
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  if (atom->nmax > shared_rows) {
-    shared_rows = atom->nmax;
-    memory->destroy(shared);
-    memory->create(shared, shared_rows, 1, "sph/soil/refine:shared_levels");
-  }
-  for (int i = 0; i < nlocal; i++) shared[i][0] = values[i];
-  comm->forward_comm_array(1, shared);
-  for (int i = nlocal; i < nall; i++) values[i] = (int) shared[i][0];
+  double **rows = shared.owned();
+  for (int i = 0; i < nlocal; i++) rows[i][0] = values[i];
+  shared.forward();
+  for (int i = nlocal; i < nall; i++) values[i] = (int) rows[i][0];
 }

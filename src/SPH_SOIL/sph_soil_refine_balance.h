@@ -8,6 +8,7 @@
 #define LMP_SPH_SOIL_REFINE_BALANCE_H
 
 #include "pointers.h"
+#include "sph_soil_ghost_rows.h"
 
 #include <vector>
 
@@ -15,8 +16,10 @@ namespace LAMMPS_NS {
 
 class SPHSoilRefineBalance : protected Pointers {
  public:
-  explicit SPHSoilRefineBalance(LAMMPS *lmp) : Pointers(lmp) {}
-  ~SPHSoilRefineBalance() override;
+  explicit SPHSoilRefineBalance(LAMMPS *lmp) :
+      Pointers(lmp), shared(lmp, 1, "sph/soil/refine:shared_levels")
+  {
+  }
 
   // The neighbours among the owned and ghost particles of `groupbit`, and their levels; the
   // ghosts must be current. Collective. Neighbours for the balance lie within BUFFER times the
@@ -52,8 +55,7 @@ class SPHSoilRefineBalance : protected Pointers {
   std::vector<int> support_offsets, support_partners;    // the neighbours within the support
   size_t previous_edges = 0;                               // (to reserve)
   std::vector<int> level, new_level;    // owned and ghost particles
-  double **shared = nullptr;            // levels to and from the ghosts
-  int shared_rows = 0;
+  SPHSoilGhostRows shared;              // levels to the ghosts
   void share(std::vector<int> &values);    // owned values to the ghosts
 };
 

@@ -6,10 +6,8 @@
 
 #include "atom.h"
 #include "atom_vec_sph_soil.h"
-#include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "memory.h"
 #include "region.h"
 #include "soil_neighbours.h"
 #include "sph_soil_compat.h"
@@ -30,13 +28,9 @@ std::string SPHSoilRefineSelection::keywords()
 SPHSoilRefineSelection::SPHSoilRefineSelection(LAMMPS *lmp, const std::string &command,
                                                const std::string &default_criterion) :
     Pointers(lmp), command(command), criterion_word(default_criterion),
-    criterion(make_refine_criterion(lmp, command, default_criterion)), region(nullptr)
+    criterion(make_refine_criterion(lmp, command, default_criterion)), region(nullptr),
+    shared(lmp, 2, "sph/soil/refine:buffer")
 {
-}
-
-SPHSoilRefineSelection::~SPHSoilRefineSelection()
-{
-  memory->destroy(shared);
 }
 
 bool SPHSoilRefineSelection::parse_keyword(const std::string &keyword, const char *value)
@@ -88,25 +82,21 @@ std::vector<int> SPHSoilRefineSelection::parents(int groupbit, int maxlevel, con
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   criterion->prepare(history);
   if (region) region->prematch();
-  if (may_split) may_split->assign(atom->nlocal, 0);
+  std::vector<char> own_may_split;
+  std::vector<char> &allowed = may_split ? *may_split : own_may_split;
+  allowed.assign(atom->nlocal, 0);
   std::vector<int> selected;
-  std::vector<char> wanted, allowed;
-  if (buffer > 0.0) {
-    wanted.assign(atom->nlocal, 0);
-    allowed.assign(atom->nlocal, 0);
-  }
+  std::vector<char> wanted(buffer > 0.0 ? atom->nlocal : 0, 0);
   double **x = atom->x;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     if (region && !region->match(x[i][0], x[i][1], x[i][2])) continue;
-    const bool below_limit = maxlevel <= 0 || avec->level[i] < maxlevel;
-    if (below_limit && may_split) (*may_split)[i] = 1;
+    allowed[i] = maxlevel <= 0 || avec->level[i] < maxlevel;
     // (the criterion is asked at maxlevel too only where a buffer needs the answer)
     if (buffer > 0.0) {
-      allowed[i] = below_limit;
       wanted[i] = criterion->wants(i);
-      if (below_limit && wanted[i]) selected.push_back(i);
-    } else if (below_limit && criterion->wants(i)) {
+      if (allowed[i] && wanted[i]) selected.push_back(i);
+    } else if (allowed[i] && criterion->wants(i)) {
       selected.push_back(i);
     }
   }
@@ -130,16 +120,12 @@ void SPHSoilRefineSelection::widen(int groupbit, const std::vector<char> &wanted
 {
   auto avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
-  if (atom->nmax > shared_rows) {
-    shared_rows = atom->nmax;
-    memory->destroy(shared);
-    memory->create(shared, shared_rows, 2, "sph/soil/refine:buffer");
-  }
+  double **rows = shared.owned();
   for (int i = 0; i < nlocal; i++) {
-    shared[i][0] = wanted[i];
-    shared[i][1] = avec->level[i];
+    rows[i][0] = wanted[i];
+    rows[i][1] = avec->level[i];
   }
-  comm->forward_comm_array(2, shared);
+  shared.forward();
 
   std::vector<int> members;
   for (int i = 0; i < nlocal; i++)
@@ -154,8 +140,8 @@ void SPHSoilRefineSelection::widen(int groupbit, const std::vector<char> &wanted
   parent_in_buffer.assign(nlocal, 0);
   double **x = atom->x;
   for (int j = 0; j < nall; j++) {
-    if (shared[j][0] == 0.0) continue;
-    const int level_j = (int) shared[j][1];
+    if (rows[j][0] == 0.0) continue;
+    const int level_j = (int) rows[j][1];
     // the members whose b support h_k (or their parent's) reaches x_j
     near.for_each_within(x[j], 0.0, [&](int k, double r2) {
       if (k == j) return;
@@ -174,5 +160,5 @@ void SPHSoilRefineSelection::widen(int groupbit, const std::vector<char> &wanted
 std::string SPHSoilRefineSelection::describe() const
 {
   return criterion->describe() + (region_id.empty() ? "" : ", in region " + region_id) +
-      (buffer > 0.0 ? fmt::format(", and within {} kernel support(s) of them", buffer) : "");
+      (buffer > 0.0 ? fmt::format(", and those whose kernel ({} of its support) reaches one", buffer) : "");
 }

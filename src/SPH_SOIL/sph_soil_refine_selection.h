@@ -8,6 +8,7 @@
 #ifndef LMP_SPH_SOIL_REFINE_SELECTION_H
 #define LMP_SPH_SOIL_REFINE_SELECTION_H
 
+#include "sph_soil_ghost_rows.h"
 #include "sph_soil_refine_criterion.h"
 
 #include <memory>
@@ -20,7 +21,6 @@ class SPHSoilRefineSelection : protected Pointers {
  public:
   // `command` as the user types it ("fix sph/soil/refine"), `default_criterion` its default
   SPHSoilRefineSelection(LAMMPS *lmp, const std::string &command, const std::string &default_criterion);
-  ~SPHSoilRefineSelection() override;
 
   // criterion, region, buffer and the criterion's own keywords; false if `keyword` is none of
   // them
@@ -35,10 +35,9 @@ class SPHSoilRefineSelection : protected Pointers {
   // the criterion wants, and with a buffer b those whose kernel's support times b (b support
   // h_k, their own h: the reach of their kernel) reaches a particle j of the group and region
   // that the criterion wants (at any level, maxlevel included), if they are not finer than j;
-  // collective (the criterion may
-  // evaluate a variable; with a buffer the ghosts must be current). `may_split`, if given,
-  // gets per owned particle whether it may split (group, level, region) whatever the criterion
-  // says.
+  // collective (the criterion may evaluate a variable; with a buffer the ghosts must be
+  // current). `may_split`, if given, gets per owned particle whether it may split (group,
+  // level, region) whatever the criterion says.
   std::vector<int> parents(int groupbit, int maxlevel, const RefineHistory &history = RefineHistory(),
                            std::vector<char> *may_split = nullptr);
   // whether owned particle i is quiet enough to merge (after parents(), which prepares the
@@ -57,16 +56,15 @@ class SPHSoilRefineSelection : protected Pointers {
   std::unique_ptr<SPHSoilRefineCriterion> criterion;
   std::string region_id;
   class Region *region;
-  double buffer = 0.0;              // in kernel supports of the wanted particle
+  double buffer = 0.0;              // b: in kernel supports of the buffered particle's own h
   double support = 2.0;             // the kernel's support in h (init)
   double smoothing_ratio = 0.5;     // alpha_r (init)
   // per owned particle, at the last parents(): within the buffer of a wanted particle, and
   // (a refined one) with its parent's reach
   std::vector<char> in_buffer, parent_in_buffer;
-  double **shared = nullptr;        // wanted flags and levels to the ghosts
-  int shared_rows = 0;
-  // the owned particles within the buffer of `wanted` (owned and, after a forward
-  // communication, ghost flags), and those of them that may split
+  SPHSoilGhostRows shared;          // wanted flags and levels to the ghosts
+  // the owned particles in the buffer of the `wanted` ones (owned and ghosts), and those of
+  // them that may split, added to `selected`
   void widen(int groupbit, const std::vector<char> &wanted, const std::vector<char> &may_split,
              std::vector<int> &selected);
 };

@@ -1,6 +1,7 @@
 // sph_soil_refine_map: the kernel-gradient error map and instability conditions of one split
 // (the dynamic-refinement paper's Fig. 1) over a grid of (eps_r, alpha_r), as CSV, and the
-// parameters that minimise max(E_a, E_b) among the stable ones. See doc/refinement_parameters.rst.
+// parameters that minimise max(E_a, E_b) among the stable ones, and the push that a split and the
+// edge of a refined zone give a soil at rest. See doc/refinement_parameters.rst.
 #include "soil_refine_error.h"
 
 #include <algorithm>
@@ -138,6 +139,16 @@ int main(int argc, char **argv)
                   stable_refinement(eps, alpha, o.ra, 1.0) ? "true" : "false",
                   stable_refinement(eps, alpha, o.ra, 0.85) ? "true" : "false", defect.neighbours,
                   defect.daughters, k < 3 ? "," : "");
+    json += line;
+  }
+  json += "  ],\n";
+  // the push at the edge of a refined zone (level_edge_defect), separation 0.5
+  json += "  \"level_edge_separation_0.5\": [\n";
+  const double ratios[3] = {0.5, 0.7, 0.9};
+  for (int k = 0; k < 3; k++) {
+    const auto edge = level_edge_defect(o.dimension, 0.5, ratios[k], o.ra);
+    std::snprintf(line, sizeof line, "    {\"alpha_r\": %.1f, \"coarse\": %.4g, \"daughters\": %.4g}%s\n",
+                  ratios[k], edge.neighbours, edge.daughters, k < 2 ? "," : "");
     json += line;
   }
   json += "  ]\n}\n";

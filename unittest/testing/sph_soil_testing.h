@@ -160,20 +160,33 @@ inline std::map<LAMMPS_NS::tagint, std::vector<double>> gather_state(LAMMPS_NS::
   return state;
 }
 
-// Every value of every atom of `state` (gather_state()) within `relative` of the `reference`'s
-// plus `absolute` (the round-off of a change of summation order, or of a scheme's variant)
+// Every value (or those of the state_names() columns `columns`) of every atom of `state`
+// (gather_state()) within `relative` of the `reference`'s plus `absolute` (the round-off of a
+// change of summation order, or of a scheme's variant)
 inline void expect_same_state(const std::map<LAMMPS_NS::tagint, std::vector<double>> &state,
                               const std::map<LAMMPS_NS::tagint, std::vector<double>> &reference,
-                              double relative, double absolute)
+                              double relative, double absolute, std::vector<int> columns = {})
 {
   ASSERT_EQ(state.size(), reference.size());
   const auto &names = state_names();
+  if (columns.empty())
+    for (size_t k = 1; k < names.size(); k++) columns.push_back((int) k);
   for (const auto &entry : reference) {
     const auto &s = state.at(entry.first);
-    for (size_t k = 1; k < names.size(); k++)
+    for (int k : columns)
       ASSERT_NEAR(s[k], entry.second[k], relative * std::fabs(entry.second[k]) + absolute)
           << "atom " << entry.first << " " << names[k];
   }
+}
+
+// the owned atoms of all ranks for which pred(i) holds
+template <class Predicate> inline LAMMPS_NS::bigint count_atoms(LAMMPS_NS::LAMMPS *lmp, Predicate pred)
+{
+  LAMMPS_NS::bigint mine = 0, all = 0;
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    if (pred(i)) mine++;
+  MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, MPI_COMM_WORLD);
+  return all;
 }
 
 }    // namespace SPHSoilTesting

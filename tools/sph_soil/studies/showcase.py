@@ -111,7 +111,8 @@ def compare(showcase, results):
         rows.append({
             'name': name, 'label': label, 'spacing_m': r['spacing_m'],
             'finest_spacing_m': r.get('finest_spacing_m', r['spacing_m']), 'refined': r['refined'],
-            'stepping': r.get('stepping'), 'split': r.get('split'), 'critical': r['critical'], 'half_width': r['half_width'],
+            'stepping': r.get('stepping'), 'buffer': r.get('buffer'), 'ease': r.get('ease'),
+            'split': r.get('split'), 'critical': r['critical'], 'half_width': r['half_width'],
             'stands_up_to': r['stands_up_to'], 'fails_from': r['fails_from'],
             'wall_seconds': r['wall_seconds_all_runs'],
             'cost_over_finest_uniform': round(r['wall_seconds_all_runs'] / finest['wall_seconds_all_runs'], 3),

@@ -16,7 +16,7 @@ JSON, so another threshold can be applied to the same runs. Prints JSON, writes 
   python3 -m sph_soil strength-reduction [--input examples/slope/in.slope] [--lmp build/lmp] [--np 2]
                               [--d 0.5] [--var NAME VALUE] [--low 1.0] [--high 2.0] [--steps 4]
                               [--refine [N]] [--stepping global|level] [--criterion strain|shear_strain_rate]
-                              [--threshold T] [--every N] [--balance] [--split EPS ALPHA]
+                              [--threshold T] [--every N] [--balance] [--buffer B] [--ease T] [--split EPS ALPHA]
                               [--data slope.dat] [--length 10] [--creep 0.001] [--late 0.3]
                               [--reference 1.4] [--workdir /tmp/sph_soil_strength_reduction]
                               [--json examples/slope/slope.json] [--plot examples/slope/slope.png]

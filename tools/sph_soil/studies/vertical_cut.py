@@ -15,7 +15,7 @@ displacement against time for every run.
   python3 -m sph_soil vertical-cut [--lmp build/lmp] [--np 2] [--d 0.025] [--low 3.0] [--high 4.5]
                         [--steps 4] [--creep 0.001] [--refine [N]] [--stepping global|level]
                         [--criterion strain|shear_strain_rate] [--threshold T] [--every N] [--balance]
-                        [--split EPS ALPHA]
+                        [--buffer B] [--ease T] [--split EPS ALPHA]
                         [--workdir /tmp/sph_soil_vertical_cut]
                         [--json examples/vertical_cut/vertical_cut.json]
                         [--plot examples/vertical_cut/vertical_cut.png]
