@@ -1,9 +1,9 @@
-"""The refinement options of the studies that bisect a failure (vertical_cut, strength_reduction):
-the command line's --refine, --stepping, --criterion, --threshold, --every, --balance, --buffer,
---ease and --split, the input variables they set (examples/vertical_cut and examples/slope read
-the same names: refine, stepping, criterion, threshold, check, balance, buffer, ease, separation,
-smoothing), a directory tag and a title per configuration, and the fields that describe it in a
-JSON summary."""
+"""The refinement options of the studies of a failure (vertical_cut, strength_reduction,
+bearing_capacity): the command line's --refine, --stepping, --criterion, --threshold, --every,
+--balance, --buffer, --ease and --split, the input variables they set (examples/vertical_cut,
+examples/slope and examples/bearing_capacity read the same names: refine, stepping, criterion,
+threshold, check, balance, buffer, ease, separation, smoothing), a directory tag and a title per
+configuration, and the fields that describe it in a JSON summary."""
 
 
 def add_arguments(p, every):

@@ -239,6 +239,37 @@ def test_showcase_compares_with_the_finest_uniform_run(tmp_path):
         cli.main(['showcase', 'footing', '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])
 
 
+def test_showcase_of_one_run_per_configuration(tmp_path):
+    """The bearing-capacity showcase reads each configuration's one push (the study's JSON of
+    runs): its limit pressure is the answer, without a bracket; a JSON of another shape is an error."""
+    work = tmp_path / 'work' / 'bearing-capacity'
+    work.mkdir(parents=True)
+
+    def result(name, resolution, refined, limit, seconds):
+        run = {'B_over_d': resolution, 'spacing_m': 1.0 / resolution, 'finest_spacing_m': 1.0 / resolution / 2 ** refined,
+               'refined': refined, 'stepping': 'level' if refined else None, 'buffer': 1.0 if refined else None,
+               'ease': None, 'split': None, 'q_limit_over_cNc': limit, 'wall_seconds': seconds}
+        (work / f'{name}.json').write_text(json.dumps({'runs': [run]}))
+    result('u10', 10, 0, 1.09, 5.0)
+    result('u20', 20, 0, 1.085, 40.0)
+    result('u40', 40, 0, 1.065, 500.0)
+    result('l2_level', 10, 2, 1.066, 70.0)
+    result('l1_level', 10, 1, 1.07, 15.0)
+    doc = tmp_path / 'doc'
+    cli.main(['showcase', 'bearing-capacity', '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])
+    summary = json.loads((doc / 'showcases.json').read_text())['bearing-capacity']
+    rows = {r['name']: r for r in summary['configurations']}
+    assert summary['finest_uniform'] == 'u40' and summary['tolerance'] == pytest.approx(0.02)
+    assert rows['l2_level']['within_tolerance'] and rows['l2_level']['cost_over_finest_uniform'] == 0.14
+    assert rows['l1_level']['difference_from_uniform_at_its_spacing'] == pytest.approx(-0.015)
+    assert rows['l2_level']['half_width'] == 0.0 and rows['l2_level']['stands_up_to'] is None
+    table = (doc / 'showcases.rst').read_text()
+    assert '1.0660' in table and 'maxlevel 2 from B/d = 10' in table
+    (work / 'u10.json').write_text(json.dumps({'runs': []}))
+    with pytest.raises(ValueError, match='one finished push'):
+        cli.main(['showcase', 'bearing-capacity', '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])
+
+
 def test_showcase_runs_the_missing_configurations(tmp_path, monkeypatch):
     """--run hands each configuration without a JSON to its study, with the showcase's bracket;
     a configuration whose study stops (no bracket) does not stop the others."""

@@ -24,6 +24,11 @@ The box is 12 B wide and 5 B deep (--width, --depth): in one 8 B x 2.5 B, which 
 Prandtl's mechanism, the model's own mechanism at phi = 20 (psi = 0) reaches the smooth floor
 and the limit comes out box-limited, 0.79 c N_c at every resolution (doc/validation.rst).
 
+--refine N (and the other refinement options of the slope's and the vertical cut's studies:
+--stepping, --buffer, ...) splits the particles that strain, N levels deep, with the footing's
+wall particles at the finest level's spacing; the showcase (python3 -m sph_soil showcase
+bearing-capacity) compares such runs with the uniform ones.
+
 Prints JSON, writes --json, the plot --plot (q / c against settlement / B with the Prandtl
 lines) and a picture of the failure mechanisms of the finest runs (--mechanism: the soil
 coloured by its accumulated maximum shear strain at the end of the push, phi = 0 and 20 side
@@ -32,7 +37,7 @@ doc/img/bearing_capacity_mechanism.png.
 
   python3 -m sph_soil bearing-capacity [--lmp build/lmp] [--np 2] [--resolutions 10 20] [--phis 0 20]
                                       [--speed 0.1] [--tension 0] [--slip freeslip] [--check-speed]
-                                      [--width 12] [--depth 5]
+                                      [--width 12] [--depth 5] [--refine N [--stepping level] ...]
                                       [--workdir /tmp/sph_soil_bearing_capacity] [--doc]
                                       [--json examples/bearing_capacity/bearing_capacity.json]
                                       [--plot examples/bearing_capacity/bearing_capacity.png]
@@ -45,13 +50,15 @@ import shutil
 
 import numpy as np
 
-from .. import paths, report, runner
+from .. import paths, refine_options, report, runner
 from ..dumps import read_ave_time
+from ..inputs import input_variables
 from ..logs import Log
 
 COMMAND = 'bearing-capacity'
 EXDIR = paths.example_dir('bearing_capacity')
 EXAMPLE = paths.example_input('bearing_capacity')
+DEFAULTS = input_variables(EXAMPLE)
 B = 1.0
 
 
@@ -80,6 +87,9 @@ def measure(directory, phi, resolution, speed, c, slip, tension, returncode, sec
     if m:
         result.update({'q_limit_Pa': float(m.group(1)), 'q_limit_over_cNc': float(m.group(2)),
                        'soil_inside_footing': int(m.group(3))})
+        left = log.findall(r'soil that left the box: ([0-9.eE+-]+)')
+        if left:    # particles squeezed out at the footing's corner (their mass in initial particles)
+            result['soil_left_box_particles'] = float(left[-1])
     else:
         err = log.findall(r'ERROR.*')
         result['error'] = err[-1] if err else f'exit code {returncode}'
@@ -91,14 +101,15 @@ def measure(directory, phi, resolution, speed, c, slip, tension, returncode, sec
         result['q_max_over_cNc'] = round(float(q.max()) / (c * nc), 4)
     result['settlement'] = settle.tolist()
     result['q_over_c'] = (q / c).tolist()
-    frames = sorted(glob.glob(os.path.join(directory, 'frame.*.png')))
-    result['frame'] = frames[-1] if frames else None
+    end = glob.glob(os.path.join(directory, 'frame.end.*.png'))
+    result['frame'] = end[0] if end else None
     return result
 
 
 def run(lmp, args, phi, resolution, speed):
     d = B / resolution
-    tag = f'phi{phi:g}_Bd{resolution:g}_v{speed:g}_{args.slip}_T{args.tension}_box{args.width:g}x{args.depth:g}'
+    tag = (f'phi{phi:g}_Bd{resolution:g}_v{speed:g}_{args.slip}_T{args.tension}_box{args.width:g}x{args.depth:g}'
+           f'{refine_options.tag(args)}')
     directory = os.path.join(args.workdir, tag)
     os.makedirs(directory, exist_ok=True)
     for old in glob.glob(os.path.join(directory, 'frame.*.png')):
@@ -108,9 +119,11 @@ def run(lmp, args, phi, resolution, speed):
     done = lmp.run('in.bearing_capacity', directory, np=args.np, variables=[
         ('phi', f'{phi:g}'), ('d', f'{d:.10g}'), ('speed', f'{speed:g}'), ('c', f'{args.c:g}'),
         ('slip', args.slip), ('tension', '-1' if args.tension == 'none' else args.tension),
-        ('width', f'{args.width:g}'), ('depth', f'{args.depth:g}')])
-    return measure(directory, phi, resolution, speed, args.c, args.slip, args.tension, done.returncode,
-                   done.seconds)
+        ('width', f'{args.width:g}'), ('depth', f'{args.depth:g}')] + refine_options.variables(args))
+    result = measure(directory, phi, resolution, speed, args.c, args.slip, args.tension, done.returncode,
+                     done.seconds)
+    result.update(refine_options.summary(args, d), refinement=refine_options.title(args).lstrip(', '))
+    return result
 
 
 def curves_plot(runs, speed, phis, resolutions, footing, out):
@@ -124,6 +137,8 @@ def curves_plot(runs, speed, phis, resolutions, footing, out):
         if r['speed_m_per_s'] != speed:
             style = ':'
         label = f"phi = {r['phi_deg']:g}, B/d = {r['B_over_d']:g}"
+        if r.get('refinement'):
+            label += f", {r['refinement']}"
         if r['speed_m_per_s'] != speed:
             label += f", {r['speed_m_per_s']:g} m/s"
         if 'q_limit_over_cNc' in r:
@@ -180,6 +195,20 @@ def add_arguments(p):
     p.add_argument('--plot', default=os.path.join(EXDIR, 'bearing_capacity.png'))
     p.add_argument('--mechanism', default=os.path.join(EXDIR, 'bearing_capacity_mechanism.png'))
     p.add_argument('--doc', action='store_true', help='copy plot and picture to doc/img/')
+    refine_options.add_arguments(p, every=int(DEFAULTS['check']))
+
+
+def showcase_answer(summary):
+    """A showcase configuration's answer (studies/showcase.py) from this study's JSON of one push:
+    the limit pressure q / (c N_c) and the push's wall time, with the run's refinement fields."""
+    runs = summary['runs']
+    if len(runs) != 1 or 'q_limit_over_cNc' not in runs[0]:
+        raise ValueError(f'bearing capacity: a showcase configuration is one finished push, got {runs}')
+    r = runs[0]
+    return {**{k: r[k] for k in ('spacing_m', 'finest_spacing_m', 'refined', 'stepping', 'buffer', 'ease',
+                                  'split')},
+            'critical': r['q_limit_over_cNc'], 'half_width': 0.0, 'stands_up_to': None, 'fails_from': None,
+            'wall_seconds_all_runs': r['wall_seconds']}
 
 
 def main(args):

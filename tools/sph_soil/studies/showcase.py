@@ -1,24 +1,25 @@
 """Refinement showcases: a failure with a narrow shear zone solved coarse, with dynamic refinement
 and uniformly at the finest spacing, each configuration's answer against its cost.
 
-A showcase is a bisection study (vertical-cut: the critical gamma H / c of a vertical cut;
-strength-reduction: the factor of safety of examples/slope) run in several configurations with
-the same bracket: uniform lattices at two or three spacings (their convergence) and dynamic
+A showcase is a study run in several configurations with the same options: a bisection
+(vertical-cut: the critical gamma H / c of a vertical cut; strength-reduction: the factor of
+safety of examples/slope, the answer the middle of the last bracket) or one run (bearing-capacity:
+the limit pressure of a strip footing, its q / (c N_c)), each as: uniform lattices at two or three spacings (their convergence) and dynamic
 refinement (maxlevel 1, 2, 3 from coarser lattices down to the finest uniform spacing, with a
-time step per level or one global step). Each configuration's bisection writes its JSON and
+time step per level or one global step). Each configuration's study writes its JSON and
 plot under --workdir/<showcase>/ (name.json, name.png); configurations whose JSON is there are
 not run again (--run runs the missing ones, in the order listed; without --run only the
 existing ones are reported). The report compares every configuration with the finest uniform
 run: its answer, whether it is within the difference between the two finest uniform runs (the
 issue's tolerance: refinement should reach the finest answer as well as that answer is
 converged), and its wall time as a fraction of the finest uniform run's (all runs of the
-bisection, the same machine and rank count).
+configuration, the same machine and rank count).
 
 Writes doc/showcases.json (every showcase reported; bench/benchmark.py --showcases includes it),
 doc/showcases.rst (a table per showcase) and doc/img/showcase_<name>.png (answer against wall
 time, the uniform runs' convergence joined by a line).
 
-  python3 -m sph_soil showcase [vertical-cut slope] [--run] [--lmp build/lmp] [--np 2]
+  python3 -m sph_soil showcase [vertical-cut slope bearing-capacity] [--run] [--lmp build/lmp] [--np 2]
                                [--workdir /tmp/sph_soil_showcase]
 """
 import argparse
@@ -27,14 +28,17 @@ import os
 import sys
 
 from .. import paths, report
-from . import strength_reduction, vertical_cut
+from . import bearing_capacity, strength_reduction, vertical_cut
 
 COMMAND = 'showcase'
 
-# name, label, the study's command-line options (the showcase's bracket is added)
+# name, label, the study's command-line options (the showcase's own 'options' are added: a
+# bisection's bracket); 'answer' turns a study's JSON into the fields compare() reads (critical,
+# half_width, stands_up_to, fails_from, wall_seconds_all_runs and the refinement's), by default
+# the JSON itself (a bisection's summary has them)
 SHOWCASES = {
     'vertical-cut': {
-        'study': vertical_cut, 'bracket': ['--low', '3.5', '--high', '4.5', '--steps', '3'],
+        'study': vertical_cut, 'options': ['--low', '3.5', '--high', '4.5', '--steps', '3'],
         'title': 'Vertical cut, phi = 0: critical gamma H / c (Pastor et al. 2000: 3.772-3.786)',
         'quantity': 'critical gamma H / c', 'reference': 0.5 * sum(vertical_cut.PASTOR),
         'configurations': [
@@ -51,7 +55,7 @@ SHOWCASES = {
              ['--d', '0.1', '--refine', '3', '--stepping', 'level', '--every', '48', '--balance']),
         ]},
     'slope': {
-        'study': strength_reduction, 'bracket': ['--low', '1.25', '--high', '1.5', '--steps', '1'],
+        'study': strength_reduction, 'options': ['--low', '1.25', '--high', '1.5', '--steps', '1'],
         'title': 'Slope (Griffiths & Lane 1999, example 1): factor of safety (their FE: 1.4)',
         'quantity': 'factor of safety', 'reference': strength_reduction.REFERENCE,
         'configurations': [
@@ -70,15 +74,41 @@ SHOWCASES = {
             ('l1_from025_level', 'maxlevel 1 from 0.25 m, a step per level, buffer 1',
              ['--d', '0.25', '--refine', '1', '--stepping', 'level', '--balance']),
         ]},
+    'bearing-capacity': {
+        # phi = 0 in the box 8 B x 2.5 B, which holds its mechanism; no picture of the mechanism.
+        # The refinement checks every 64 steps (16 of the coarse level's with maxlevel 2): the
+        # footing moves 0.2 mm between checks, a hundredth of the finest spacing
+        'study': bearing_capacity, 'answer': bearing_capacity.showcase_answer,
+        'options': ['--phis', '0', '--width', '8', '--depth', '2.5', '--mechanism', ''],
+        'title': 'Smooth strip footing, phi = 0 (Prandtl): limit pressure q / (c N_c)',
+        'quantity': 'limit pressure q / (c N_c)', 'reference': 1.0,
+        'configurations': [
+            ('u10', 'uniform B/d = 10', ['--resolutions', '10']),
+            ('u20', 'uniform B/d = 20', ['--resolutions', '20']),
+            ('u40', 'uniform B/d = 40', ['--resolutions', '40']),
+            ('l1_level', 'maxlevel 1 from B/d = 10, a step per level, buffer 1',
+             ['--resolutions', '10', '--refine', '1', '--stepping', 'level', '--balance', '--every', '64']),
+            ('l2_level', 'maxlevel 2 from B/d = 10, a step per level, buffer 1',
+             ['--resolutions', '10', '--refine', '2', '--stepping', 'level', '--balance', '--every', '64']),
+            ('l2_global', 'maxlevel 2 from B/d = 10, one global step, buffer 1',
+             ['--resolutions', '10', '--refine', '2', '--balance', '--every', '64']),
+            ('l2_level_nobuffer', 'maxlevel 2 from B/d = 10, a step per level, no buffer',
+             ['--resolutions', '10', '--refine', '2', '--stepping', 'level', '--balance', '--buffer', '0',
+              '--every', '64']),
+            ('l2_level_N16', 'maxlevel 2 from B/d = 10, a step per level, buffer 1, checks every 16 steps',
+             ['--resolutions', '10', '--refine', '2', '--stepping', 'level', '--balance']),
+            ('l1_from20_level', 'maxlevel 1 from B/d = 20, a step per level, buffer 1',
+             ['--resolutions', '20', '--refine', '1', '--stepping', 'level', '--balance', '--every', '64']),
+        ]},
 }
 
 
 def run_configuration(showcase, name, options, args):
-    """One configuration's bisection, in this process (the study's own main)."""
+    """One configuration's study, in this process (the study's own main)."""
     directory = os.path.join(args.workdir, showcase)
     os.makedirs(directory, exist_ok=True)
     study = SHOWCASES[showcase]['study']
-    argv = [*SHOWCASES[showcase]['bracket'], *options, '--np', str(args.np),
+    argv = [*SHOWCASES[showcase]['options'], *options, '--np', str(args.np),
             '--workdir', os.path.join(directory, 'runs'), '--json', os.path.join(directory, f'{name}.json'),
             '--plot', os.path.join(directory, f'{name}.png')] + (['--lmp', args.lmp] if args.lmp else [])
     print(f'showcase {showcase}: {name}: python3 -m sph_soil {study.COMMAND} {" ".join(argv)}', file=sys.stderr,
@@ -128,7 +158,7 @@ def compare(showcase, results):
 
 
 def figure(showcase, summary, out):
-    """The answer (the bisection's bracket as an error bar) against the wall time of all runs."""
+    """The answer (a bisection's bracket as an error bar) against the wall time of all runs."""
     plt = report.pyplot()
     fig, ax = plt.subplots(figsize=(7.5, 6.0))
     rows = summary['configurations']
@@ -153,7 +183,7 @@ def figure(showcase, summary, out):
     ax.axhline(summary['reference'], color='tab:green', linestyle='--', label=f"published: {summary['reference']:g}")
     ax.axvline(0.2 * finest['wall_seconds'], color='0.5', linestyle=':', label='0.2x the finest uniform run')
     ax.set_xscale('log')
-    ax.set_xlabel('wall time of the bisection, all runs (s, 2 ranks)')
+    ax.set_xlabel('wall time of the configuration, all runs (s, 2 ranks)')
     ax.set_ylabel(summary['quantity'])
     ax.set_title(summary['title'], fontsize=9)
     ax.legend(fontsize=6.5, loc='upper center', bbox_to_anchor=(0.5, -0.16), ncol=2)
@@ -162,11 +192,17 @@ def figure(showcase, summary, out):
 
 
 def table(summary):
-    header = ['configuration', 'finest spacing (m)', 'stands up to', 'fails from', 'critical',
+    header = ['configuration', 'finest spacing (m)', 'stands up to', 'fails from', 'answer',
               'from finest uniform', 'within', 'wall (s)', 'cost / finest uniform',
               'from / cost of uniform at its spacing']
-    rows = [[r['label'], f"{r['finest_spacing_m']:g}", f"{r['stands_up_to']:g}", f"{r['fails_from']:g}",
-             f"{r['critical']:.4g} +- {r['half_width']:.3g}", f"{r['difference_from_finest_uniform']:+.4g}",
+    def bound(value):
+        return '-' if value is None else f'{value:g}'
+
+    def answer(r):      # a bisection's middle and half width, or one run's value
+        return f"{r['critical']:.4g} +- {r['half_width']:.3g}" if r['half_width'] else f"{r['critical']:.4f}"
+
+    rows = [[r['label'], f"{r['finest_spacing_m']:g}", bound(r['stands_up_to']), bound(r['fails_from']),
+             answer(r), f"{r['difference_from_finest_uniform']:+.4g}",
              {True: 'yes', False: 'no', None: '-'}[r['within_tolerance']], f"{r['wall_seconds']:.0f}",
              f"{r['cost_over_finest_uniform']:.2f}",
              '-' if r['cost_over_uniform_at_its_spacing'] is None else
@@ -199,16 +235,16 @@ def main(args):
                 run_configuration(showcase, name, options, args)
             if os.path.exists(path):
                 with open(path) as f:
-                    results[name] = json.load(f)
+                    results[name] = SHOWCASES[showcase].get('answer', lambda summary: summary)(json.load(f))
         summaries[showcase] = compare(showcase, results)
     summaries = {k: v for k, v in summaries.items() if v}
     os.makedirs(os.path.join(args.doc, 'img'), exist_ok=True)
     report.write_json(summaries, os.path.join(args.doc, 'showcases.json'), indent=1)
     page = ['Refinement showcases (generated)', '=' * 32, '',
-            'Written by ``python3 -m sph_soil showcase`` (tools/sph_soil/studies/showcase.py): each failure bisected',
-            'coarse, with dynamic refinement and uniformly at the finest spacing, on 2 ranks of the same machine in one',
+            'Written by ``python3 -m sph_soil showcase`` (tools/sph_soil/studies/showcase.py): each failure (bisected,',
+            'or one run) coarse, with dynamic refinement and uniformly at the finest spacing, on 2 ranks of the same machine in one',
             'batch. "within": the answer is within the difference between the two finest uniform runs of the finest',
-            'one\'s; wall: all runs of the bisection.', '']
+            'one\'s; wall: all runs of the configuration (a bisection\'s or one run).', '']
     for showcase, summary in summaries.items():
         figure(showcase, summary, os.path.join(args.doc, 'img', f'showcase_{showcase}.png'))
         page += [summary['title'], '"' * len(summary['title']), '', table(summary), '',
