@@ -53,6 +53,10 @@ SHOWCASES = {
              ['--d', '0.05', '--refine', '2', '--every', '48', '--balance']),
             ('l3_level', 'maxlevel 3 from 10 cm, a step per level',
              ['--d', '0.1', '--refine', '3', '--stepping', 'level', '--every', '48', '--balance']),
+            ('l2_level_buffer', 'maxlevel 2 from 5 cm, a step per level, buffer 1',
+             ['--d', '0.05', '--refine', '2', '--stepping', 'level', '--every', '48', '--balance', '--buffer', '1']),
+            ('l3_level_buffer', 'maxlevel 3 from 10 cm, a step per level, buffer 1',
+             ['--d', '0.1', '--refine', '3', '--stepping', 'level', '--every', '48', '--balance', '--buffer', '1']),
         ]},
     'slope': {
         'study': strength_reduction, 'options': ['--low', '1.25', '--high', '1.5', '--steps', '1'],
