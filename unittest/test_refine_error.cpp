@@ -128,21 +128,23 @@ TEST(RefineError, WendlandKernelErrorVanishesForCoincidingDaughtersAndIsPositive
   EXPECT_NE(e, kernel_gradient_error(2, 0.5, 0.5, 1.2, Case::UNREFINED).value);
 }
 
+// a defect's two pushes (neighbours, daughters) against reference values
+static void expect_defect(const SplitStressDefect &defect, double neighbours, double daughters,
+                          double tolerance = 1e-5)
+{
+  EXPECT_NEAR(defect.neighbours, neighbours, tolerance);
+  EXPECT_NEAR(defect.daughters, daughters, tolerance);
+}
+
 // What a split does to a soil at rest (doc/theory.rst 5.11): the stress-balance defect, against
 // an independent sum over the lattice (numpy; the cubic spline, 2D, r_a = 1.2)
 TEST(RefineError, SplitStressDefectAgainstAnIndependentLatticeSum)
 {
   // daughters on the parent's site with its h: the lattice is unchanged
-  SplitStressDefect none = split_stress_defect(2, 0.0, 1.0, 1.2);
-  EXPECT_LT(none.neighbours, 1e-12);
-  EXPECT_LT(none.daughters, 1e-12);
+  expect_defect(split_stress_defect(2, 0.0, 1.0, 1.2), 0.0, 0.0, 1e-12);
   // the package's default split, and the near-balanced (0.4, 0.9)
-  SplitStressDefect usual = split_stress_defect(2, 0.5, 0.5, 1.2);
-  EXPECT_NEAR(usual.neighbours, 0.233877, 1e-5);
-  EXPECT_NEAR(usual.daughters, 1.067237, 1e-5);
-  SplitStressDefect balanced = split_stress_defect(2, 0.4, 0.9, 1.2);
-  EXPECT_NEAR(balanced.neighbours, 0.005113, 1e-5);
-  EXPECT_NEAR(balanced.daughters, 0.009034, 1e-5);
+  expect_defect(split_stress_defect(2, 0.5, 0.5, 1.2), 0.233877, 1.067237);
+  expect_defect(split_stress_defect(2, 0.4, 0.9, 1.2), 0.005113, 0.009034);
   // 3D: zero for coinciding daughters, of the same order otherwise
   EXPECT_LT(split_stress_defect(3, 0.0, 1.0, 1.2).neighbours, 1e-12);
   SplitStressDefect cube = split_stress_defect(3, 0.5, 0.5, 1.2);
@@ -155,15 +157,9 @@ TEST(RefineError, SplitStressDefectAgainstAnIndependentLatticeSum)
 TEST(RefineError, LevelEdgeDefectAgainstAnIndependentLatticeSum)
 {
   // coinciding daughters with the parent's h: no edge at all
-  SplitStressDefect none = level_edge_defect(2, 0.0, 1.0, 1.2);
-  EXPECT_LT(none.neighbours, 1e-12);
-  EXPECT_LT(none.daughters, 1e-12);
-  SplitStressDefect usual = level_edge_defect(2, 0.5, 0.5, 1.2);
-  EXPECT_NEAR(usual.neighbours, 0.085966, 1e-5);
-  EXPECT_NEAR(usual.daughters, 0.378434, 1e-5);
-  SplitStressDefect wide = level_edge_defect(2, 0.5, 0.9, 1.2);
-  EXPECT_NEAR(wide.neighbours, 0.005055, 1e-5);
-  EXPECT_NEAR(wide.daughters, 0.047416, 1e-5);
+  expect_defect(level_edge_defect(2, 0.0, 1.0, 1.2), 0.0, 0.0, 1e-12);
+  expect_defect(level_edge_defect(2, 0.5, 0.5, 1.2), 0.085966, 0.378434);
+  expect_defect(level_edge_defect(2, 0.5, 0.9, 1.2), 0.005055, 0.047416);
   SplitStressDefect cube = level_edge_defect(3, 0.5, 0.5, 1.2);
   EXPECT_GT(cube.neighbours, 0.01);
   EXPECT_GT(cube.daughters, cube.neighbours);

@@ -38,7 +38,9 @@ COMMAND = 'showcase'
 # the JSON itself (a bisection's summary has them)
 SHOWCASES = {
     'vertical-cut': {
-        'study': vertical_cut, 'options': ['--low', '3.5', '--high', '4.5', '--steps', '3'],
+        'study': vertical_cut,
+        # the refined configurations check every 48 steps (the soil moves far less than a spacing)
+        'options': ['--low', '3.5', '--high', '4.5', '--steps', '3', '--every', '48'],
         'title': 'Vertical cut, phi = 0: critical gamma H / c (Pastor et al. 2000: 3.772-3.786)',
         'quantity': 'critical gamma H / c', 'reference': 0.5 * sum(vertical_cut.PASTOR),
         'configurations': [
@@ -46,17 +48,17 @@ SHOWCASES = {
             ('u25', 'uniform 2.5 cm', ['--d', '0.025']),
             ('u125', 'uniform 1.25 cm', ['--d', '0.0125']),
             ('l1_level', 'maxlevel 1 from 2.5 cm, a step per level',
-             ['--d', '0.025', '--refine', '1', '--stepping', 'level', '--every', '48', '--balance']),
+             ['--d', '0.025', '--refine', '1', '--stepping', 'level', '--balance']),
             ('l2_level', 'maxlevel 2 from 5 cm, a step per level',
-             ['--d', '0.05', '--refine', '2', '--stepping', 'level', '--every', '48', '--balance']),
+             ['--d', '0.05', '--refine', '2', '--stepping', 'level', '--balance']),
             ('l2_global', 'maxlevel 2 from 5 cm, one global step',
-             ['--d', '0.05', '--refine', '2', '--every', '48', '--balance']),
+             ['--d', '0.05', '--refine', '2', '--balance']),
             ('l3_level', 'maxlevel 3 from 10 cm, a step per level',
-             ['--d', '0.1', '--refine', '3', '--stepping', 'level', '--every', '48', '--balance']),
+             ['--d', '0.1', '--refine', '3', '--stepping', 'level', '--balance']),
             ('l2_level_buffer', 'maxlevel 2 from 5 cm, a step per level, buffer 1',
-             ['--d', '0.05', '--refine', '2', '--stepping', 'level', '--every', '48', '--balance', '--buffer', '1']),
+             ['--d', '0.05', '--refine', '2', '--stepping', 'level', '--balance', '--buffer', '1']),
             ('l3_level_buffer', 'maxlevel 3 from 10 cm, a step per level, buffer 1',
-             ['--d', '0.1', '--refine', '3', '--stepping', 'level', '--every', '48', '--balance', '--buffer', '1']),
+             ['--d', '0.1', '--refine', '3', '--stepping', 'level', '--balance', '--buffer', '1']),
         ]},
     'slope': {
         'study': strength_reduction, 'options': ['--low', '1.25', '--high', '1.5', '--steps', '1'],
@@ -80,10 +82,11 @@ SHOWCASES = {
         ]},
     'bearing-capacity': {
         # phi = 0 in the box 8 B x 2.5 B, which holds its mechanism; no picture of the mechanism.
-        # The refinement checks every 64 steps (16 of the coarse level's with maxlevel 2): the
-        # footing moves 0.2 mm between checks, a hundredth of the finest spacing
+        # The refinement checks every 64 steps (16 of the coarse level's with maxlevel 2; a
+        # configuration's own --every comes later and wins): the footing moves 0.2 mm between
+        # checks, a hundredth of the finest spacing
         'study': bearing_capacity, 'answer': bearing_capacity.showcase_answer,
-        'options': ['--phis', '0', '--width', '8', '--depth', '2.5', '--mechanism', ''],
+        'options': ['--phis', '0', '--width', '8', '--depth', '2.5', '--mechanism', '', '--every', '64'],
         'title': 'Smooth strip footing, phi = 0 (Prandtl): limit pressure q / (c N_c)',
         'quantity': 'limit pressure q / (c N_c)', 'reference': 1.0,
         'configurations': [
@@ -91,18 +94,17 @@ SHOWCASES = {
             ('u20', 'uniform B/d = 20', ['--resolutions', '20']),
             ('u40', 'uniform B/d = 40', ['--resolutions', '40']),
             ('l1_level', 'maxlevel 1 from B/d = 10, a step per level, buffer 1',
-             ['--resolutions', '10', '--refine', '1', '--stepping', 'level', '--balance', '--every', '64']),
+             ['--resolutions', '10', '--refine', '1', '--stepping', 'level', '--balance']),
             ('l2_level', 'maxlevel 2 from B/d = 10, a step per level, buffer 1',
-             ['--resolutions', '10', '--refine', '2', '--stepping', 'level', '--balance', '--every', '64']),
-            ('l2_global', 'maxlevel 2 from B/d = 10, one global step, buffer 1',
-             ['--resolutions', '10', '--refine', '2', '--balance', '--every', '64']),
-            ('l2_level_nobuffer', 'maxlevel 2 from B/d = 10, a step per level, no buffer',
-             ['--resolutions', '10', '--refine', '2', '--stepping', 'level', '--balance', '--buffer', '0',
-              '--every', '64']),
-            ('l2_level_N16', 'maxlevel 2 from B/d = 10, a step per level, buffer 1, checks every 16 steps',
              ['--resolutions', '10', '--refine', '2', '--stepping', 'level', '--balance']),
+            ('l2_global', 'maxlevel 2 from B/d = 10, one global step, buffer 1',
+             ['--resolutions', '10', '--refine', '2', '--balance']),
+            ('l2_level_nobuffer', 'maxlevel 2 from B/d = 10, a step per level, no buffer',
+             ['--resolutions', '10', '--refine', '2', '--stepping', 'level', '--balance', '--buffer', '0']),
+            ('l2_level_N16', 'maxlevel 2 from B/d = 10, a step per level, buffer 1, checks every 16 steps',
+             ['--resolutions', '10', '--refine', '2', '--stepping', 'level', '--balance', '--every', '16']),
             ('l1_from20_level', 'maxlevel 1 from B/d = 20, a step per level, buffer 1',
-             ['--resolutions', '20', '--refine', '1', '--stepping', 'level', '--balance', '--every', '64']),
+             ['--resolutions', '20', '--refine', '1', '--stepping', 'level', '--balance']),
         ]},
 }
 
