@@ -177,17 +177,22 @@ void AtomVecSPHSoil::process_args(int narg, char **arg)
   if (narg == 2 && strcmp(arg[0], "format") == 0) {
     const int format = utils::inumeric(FLERR, arg[1], false, lmp);
     if (format != RESTART_FORMAT)
-      error->all(FLERR, "Restart file holds atom_style sph/soil data of format {}; this build of "
-                        "SPH_SOIL reads format {}: read it with the build that wrote it and save "
-                        "the state with write_data", format, RESTART_FORMAT);
+      SPHSoilCompat::error_all(
+          lmp, FLERR,
+          "Restart file holds atom_style sph/soil data of format {}; this build of "
+          "SPH_SOIL reads format {}: read it with the build that wrote it and save "
+          "the state with write_data",
+          format, RESTART_FORMAT);
   } else if (narg > 0) {
-    error->all(FLERR, "Illegal atom_style sph/soil command: it takes no arguments, got '{}'",
-               arg[0]);
+    SPHSoilCompat::error_all(
+        lmp, FLERR, "Illegal atom_style sph/soil command: it takes no arguments, got '{}'", arg[0]);
   } else if (!sub_style && SPHSoilCompat::atom_style_from_restart(lmp)) {
-    error->all(FLERR, "Restart file holds atom_style sph/soil data without a format number, "
-                      "written before 2026-12-03 (format 1); this build of SPH_SOIL reads format {}: "
-                      "read it with the build that wrote it and save the state with write_data",
-               RESTART_FORMAT);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Restart file holds atom_style sph/soil data without a format number, "
+        "written before 2026-12-03 (format 1); this build of SPH_SOIL reads format {}: "
+        "read it with the build that wrote it and save the state with write_data",
+        RESTART_FORMAT);
   }
   if (!sub_style) store_format_args();
 }

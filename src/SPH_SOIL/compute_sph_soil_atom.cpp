@@ -6,11 +6,11 @@
 
 #include "atom.h"
 #include "atom_vec_sph_soil.h"
-#include "error.h"
 #include "force.h"
 #include "memory.h"
 #include "pair_sph_soil.h"
 #include "soil_constitutive.h"
+#include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
 #include "update.h"
 
@@ -83,7 +83,7 @@ ComputeSPHSoilAtom::ComputeSPHSoilAtom(LAMMPS *lmp, int narg, char **arg) :
     schedule(nullptr)
 {
   if (!atom->style_match("sph/soil"))
-    error->all(FLERR, "Compute sph/soil/atom requires atom_style sph/soil");
+    SPHSoilCompat::error_all(lmp, FLERR, "Compute sph/soil/atom requires atom_style sph/soil");
   auto find = [&](const std::string &name) -> const Value * {
     for (const auto &v : values())
       for (const auto &n : v.names)
@@ -93,8 +93,8 @@ ComputeSPHSoilAtom::ComputeSPHSoilAtom(LAMMPS *lmp, int narg, char **arg) :
   for (int iarg = 3; iarg < narg; iarg++) {
     const Value *value = find(arg[iarg]);
     if (!value)
-      error->all(FLERR, "Illegal compute sph/soil/atom value {} (allowed: {})", arg[iarg],
-                 value_names());
+      SPHSoilCompat::error_all(lmp, FLERR, "Illegal compute sph/soil/atom value {} (allowed: {})",
+                               arg[iarg], value_names());
     chosen.push_back(value);
   }
   if (chosen.empty())
@@ -119,8 +119,9 @@ void ComputeSPHSoilAtom::init()
   schedule = SPHSoilFixes::step_schedule(lmp);
   for (const Value *v : chosen)
     if (v->needs_pair && !pair)
-      error->all(FLERR, "Compute sph/soil/atom {} needs pair_style sph/soil ({})", v->names[0],
-                 v->needs_pair);
+      SPHSoilCompat::error_all(lmp, FLERR,
+                               "Compute sph/soil/atom {} needs pair_style sph/soil ({})",
+                               v->names[0], v->needs_pair);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -9,18 +9,19 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "memory.h"
 #include "force.h"
 #include "group.h"
+#include "memory.h"
 #include "modify.h"
 #include "output.h"
 #include "pair_sph_soil.h"
-#include "thermo.h"
 #include "soil_constitutive.h"
 #include "soil_density_step.h"
+#include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
+#include "thermo.h"
 #include "update.h"
 #include "utils.h"
 
@@ -58,7 +59,8 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
 
   for (int iarg = 3; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
-      error->all(FLERR, "Illegal fix sph/soil command: keyword {} needs a value", arg[iarg]);
+      SPHSoilCompat::error_all(lmp, FLERR, "Illegal fix sph/soil command: keyword {} needs a value",
+                               arg[iarg]);
     if (strcmp(arg[iarg], "cfl") == 0) {
       cfl = SPHSoilInput::number(FLERR, lmp, "fix sph/soil cfl", arg[iarg + 1],
                                  SPHSoilInput::between(0.0, 1.0, true, false));
@@ -71,17 +73,22 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
       else if (strcmp(arg[iarg + 1], "global") == 0)
         schedule.per_level = false;
       else
-        error->all(FLERR, "Illegal fix sph/soil stepping {} (allowed: global, level)", arg[iarg + 1]);
+        SPHSoilCompat::error_all(
+            lmp, FLERR, "Illegal fix sph/soil stepping {} (allowed: global, level)", arg[iarg + 1]);
     } else {
-      error->all(FLERR, "Illegal fix sph/soil keyword {} (allowed: cfl, dtmax, stepping)", arg[iarg]);
+      SPHSoilCompat::error_all(
+          lmp, FLERR, "Illegal fix sph/soil keyword {} (allowed: cfl, dtmax, stepping)", arg[iarg]);
     }
   }
   if (schedule.per_level) nstate = NSTATE_LEVELS;
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
-  if (!avec) error->all(FLERR, "Fix sph/soil requires atom_style sph/soil");
+  if (!avec) SPHSoilCompat::error_all(lmp, FLERR, "Fix sph/soil requires atom_style sph/soil");
   if (max_dt > 0.0 && cfl == 0.0)
-    error->all(FLERR, "Illegal fix sph/soil dtmax {}: it bounds the adaptive time step, which needs "
-                      "'cfl C' too", max_dt);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Illegal fix sph/soil dtmax {}: it bounds the adaptive time step, which needs "
+        "'cfl C' too",
+        max_dt);
   // the largest C_cfl measured stable with a fixed step (see setup()): the documented range
   // of cfl goes higher for a smooth, slow flow, but most runs will not survive it
   if (cfl > stable_cfl && comm->me == 0)
@@ -122,7 +129,7 @@ int FixSPHSoil::setmask()
 void FixSPHSoil::init()
 {
   pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));
-  if (!pair) error->all(FLERR, "Fix sph/soil requires pair_style sph/soil");
+  if (!pair) SPHSoilCompat::error_all(lmp, FLERR, "Fix sph/soil requires pair_style sph/soil");
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
 
   model_of_type.assign(atom->ntypes + 1, nullptr);
@@ -144,9 +151,11 @@ void FixSPHSoil::init()
         lmp, [&](int i) { return (mask[i] & groupbit) && (mask[i] & otherbit); },
         [](int, double *) {});
     if (twice)
-      error->all(FLERR, "Fix sph/soil {} and {} both integrate {} particle(s) (e.g. atom {}); "
-                        "integrate each particle with one fix", id, other->id, twice.count,
-                 twice.first);
+      SPHSoilCompat::error_all(
+          lmp, FLERR,
+          "Fix sph/soil {} and {} both integrate {} particle(s) (e.g. atom {}); "
+          "integrate each particle with one fix",
+          id, other->id, twice.count, twice.first);
   }
   // a group without soil particles is integrated by no one (wall particles never move)
   bigint soil = 0, all_soil = 0;
@@ -202,10 +211,12 @@ void FixSPHSoil::setup(int /*vflag*/)
         values[1] = pair->material(atom->type[i]).density;
       });
   if (thin)
-    error->all(FLERR, "Fix sph/soil: {} soil particle(s) have a density below exp(-1) = {:.3f} times "
-                      "their material's rho0, the least a soil particle can have (atom {}: {} "
-                      "against rho0 {}); set it with 'sph_soil/set <group> density'",
-               thin.count, SPHSoil::DENSITY_FLOOR, thin.first, thin.values[0], thin.values[1]);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Fix sph/soil: {} soil particle(s) have a density below exp(-1) = {:.3f} times "
+        "their material's rho0, the least a soil particle can have (atom {}: {} "
+        "against rho0 {}); set it with 'sph_soil/set <group> density'",
+        thin.count, SPHSoil::DENSITY_FLOOR, thin.first, thin.values[0], thin.values[1]);
   for (int i = 0; i < nlocal; i++)
     if (integrated(i))
       model_of_type[atom->type[i]]->stress_rate(avec->stress[i], avec->strain_rate[i], avec->spin[i],
@@ -215,9 +226,10 @@ void FixSPHSoil::setup(int /*vflag*/)
     // up to 0.195 h/c_p; the usual C_cfl range is 0.1 to 0.2 (doc/theory.rst section 4)
     const double limit = stable_timestep();
     if (update->dt > limit)
-      error->all(FLERR, "Fix sph/soil: timestep {:.6g} exceeds the stability limit {:.6g} = "
-                        "{} * min(h) / c_p; use a smaller timestep or 'cfl 0.1'",
-                 update->dt, limit, stable_cfl);
+      SPHSoilCompat::error_all(lmp, FLERR,
+                               "Fix sph/soil: timestep {:.6g} exceeds the stability limit {:.6g} = "
+                               "{} * min(h) / c_p; use a smaller timestep or 'cfl 0.1'",
+                               update->dt, limit, stable_cfl);
   }
 }
 
@@ -298,12 +310,13 @@ void FixSPHSoil::stop_if_left_box(int first_outside)
       });
   if (!outside) return;
   const double *s = outside.values;
-  error->all(FLERR,
-             "Fix sph/soil: particle {} left the box through a fixed boundary at step {} "
-             "(position {} {} {}, velocity {} {} {}); a larger box, or 'thermo_modify lost ignore' "
-             "if particles may leave; if it flew off: {}",
-             outside.first, update->ntimestep, s[0], s[1], s[2], s[3], s[4], s[5],
-             likely_causes(1.0, 1.0));
+  SPHSoilCompat::error_all(
+      lmp, FLERR,
+      "Fix sph/soil: particle {} left the box through a fixed boundary at step {} "
+      "(position {} {} {}, velocity {} {} {}); a larger box, or 'thermo_modify lost ignore' "
+      "if particles may leave; if it flew off: {}",
+      outside.first, update->ntimestep, s[0], s[1], s[2], s[3], s[4], s[5],
+      likely_causes(1.0, 1.0));
 }
 
 /* ----------------------------------------------------------------------
@@ -507,11 +520,11 @@ void FixSPHSoil::stop_if_unstable(int first_unstable)
       });
   if (!unstable) return;
   const double *s = unstable.values;
-  error->all(FLERR,
-             "Fix sph/soil: particle {} became unstable at step {} (density {}, velocity {} {} "
-             "{}, stress xx {}); {}",
-             unstable.first, update->ntimestep, s[0], s[1], s[2], s[3], s[4],
-             likely_causes(s[0], s[5]));
+  SPHSoilCompat::error_all(
+      lmp, FLERR,
+      "Fix sph/soil: particle {} became unstable at step {} (density {}, velocity {} {} "
+      "{}, stress xx {}); {}",
+      unstable.first, update->ntimestep, s[0], s[1], s[2], s[3], s[4], likely_causes(s[0], s[5]));
 }
 
 /* ----------------------------------------------------------------------
@@ -601,10 +614,12 @@ void FixSPHSoil::particles_refined(const char *who)
   if (cfl > 0.0) return adapt_timestep();
   const double limit = stable_timestep();    // (the hierarchy follows the new smallest h too)
   if (update->dt > limit)
-    error->all(FLERR, "{}: after splitting at step {} the timestep {:.6g} exceeds the stability "
-                      "limit {:.6g} = {} * min(h) / c_p; use 'cfl 0.1' in fix sph/soil (adaptive "
-                      "step) or a timestep <= {:.6g}", who, update->ntimestep, update->dt, limit,
-               stable_cfl, limit);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "{}: after splitting at step {} the timestep {:.6g} exceeds the stability "
+        "limit {:.6g} = {} * min(h) / c_p; use 'cfl 0.1' in fix sph/soil (adaptive "
+        "step) or a timestep <= {:.6g}",
+        who, update->ntimestep, update->dt, limit, stable_cfl, limit);
 }
 
 void FixSPHSoil::adapt_timestep()
@@ -748,8 +763,11 @@ void FixSPHSoil::restart(char *buf)
   const auto *list = reinterpret_cast<const double *>(buf);
   const int format = list[0] < 0.0 ? (int) -list[0] : 1;
   if (format != RESTART_FORMAT)
-    error->all(FLERR, "Fix sph/soil {}: the restart file holds its data in format {}; this build of "
-                      "SPH_SOIL reads format {}", id, format, RESTART_FORMAT);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Fix sph/soil {}: the restart file holds its data in format {}; this build of "
+        "SPH_SOIL reads format {}",
+        id, format, RESTART_FORMAT);
   // a reset_timestep since the restart file was read starts the clock anew
   if ((bigint) list[2] != update->ntimestep) return;
   update->atime = list[1];

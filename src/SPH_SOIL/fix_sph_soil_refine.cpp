@@ -52,17 +52,24 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     bytes_per_particle(0.0), node_bytes(0.0), last_split(0), last_split_step(-1), total_split(0),
     last_unbalanced(0), run_unbalanced(0), run_split(0), run_forced(0)
 {
-  if (narg < 4) error->all(FLERR, "Illegal fix sph/soil/refine command: expected 'fix ID group sph/soil/refine N keyword value ...'");
-  if (!atom->style_match("sph/soil")) error->all(FLERR, "Fix sph/soil/refine requires atom_style sph/soil");
+  if (narg < 4)
+    SPHSoilCompat::error_all(lmp, FLERR,
+                             "Illegal fix sph/soil/refine command: expected 'fix ID group "
+                             "sph/soil/refine N keyword value ...'");
+  if (!atom->style_match("sph/soil"))
+    SPHSoilCompat::error_all(lmp, FLERR, "Fix sph/soil/refine requires atom_style sph/soil");
 
   nevery = utils::inumeric(FLERR, arg[3], false, lmp);
-  if (nevery < 1) error->all(FLERR, "Illegal fix sph/soil/refine N {}: must be >= 1", nevery);
+  if (nevery < 1)
+    SPHSoilCompat::error_all(lmp, FLERR, "Illegal fix sph/soil/refine N {}: must be >= 1", nevery);
 
   // a keyword's time > 0, or no (0)
   auto time_or_no = [&](const std::string &keyword, const char *value, const char *what) {
     if (std::string(value) == "no") return 0.0;
     if (!utils::is_double(value))
-      error->all(FLERR, "Illegal fix sph/soil/refine {} {}: must be {} > 0 or no", keyword, value, what);
+      SPHSoilCompat::error_all(lmp, FLERR,
+                               "Illegal fix sph/soil/refine {} {}: must be {} > 0 or no", keyword,
+                               value, what);
     return SPHSoilInput::number(FLERR, lmp, "fix sph/soil/refine " + keyword, value, SPHSoilInput::above(0.0));
   };
   splitter.reset(new SPHSoilRefineSplitter(lmp, STYLE));
@@ -70,7 +77,8 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
   for (int iarg = 4; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
     if (iarg + 1 >= narg)
-      error->all(FLERR, "Illegal fix sph/soil/refine command: keyword {} needs a value", keyword);
+      SPHSoilCompat::error_all(
+          lmp, FLERR, "Illegal fix sph/soil/refine command: keyword {} needs a value", keyword);
     const char *value = arg[iarg + 1];
     if (selection->parse_keyword(keyword, value) ||
         splitter->parse_keyword("fix sph/soil/refine", keyword, value)) {
@@ -83,8 +91,11 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     } else if (keyword == "merge") {
       merge_time = time_or_no(keyword, value, "a hold time");
     } else {
-      error->all(FLERR, "Illegal fix sph/soil/refine keyword {} (allowed: {}, {}, "
-                        "maxlevel, merge, ease)", keyword, SPHSoilRefineSelection::keywords(), SPHSoilRefineSplitter::KEYWORDS);
+      SPHSoilCompat::error_all(lmp, FLERR,
+                               "Illegal fix sph/soil/refine keyword {} (allowed: {}, {}, "
+                               "maxlevel, merge, ease)",
+                               keyword, SPHSoilRefineSelection::keywords(),
+                               SPHSoilRefineSplitter::KEYWORDS);
     }
   }
 
@@ -140,14 +151,17 @@ void FixSPHSoilRefine::init()
   integrator = nullptr;
   for (int ifix = 0; ifix < modify->nfix && !integrator; ifix++)
     integrator = dynamic_cast<FixSPHSoil *>(modify->fix[ifix]);
-  if (!integrator) error->all(FLERR, "Fix sph/soil/refine requires fix sph/soil");
+  if (!integrator)
+    SPHSoilCompat::error_all(lmp, FLERR, "Fix sph/soil/refine requires fix sph/soil");
   // with a time step per level, splits and merges happen where every level ends a step: the
   // multiples of the largest period, 2^maxlevel for particles that began at one level
   schedule = &integrator->step_schedule();
   if (schedule->per_level && nevery % (1 << maxlevel) != 0)
-    error->all(FLERR, "Fix sph/soil/refine N {}: with fix sph/soil stepping level, N must be a "
-                      "multiple of 2^maxlevel = {}, the steps at which all levels are synchronised",
-               nevery, 1 << maxlevel);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Fix sph/soil/refine N {}: with fix sph/soil stepping level, N must be a "
+        "multiple of 2^maxlevel = {}, the steps at which all levels are synchronised",
+        nevery, 1 << maxlevel);
 
   // wall particles carry the wall geometry; splitting them would break it
   auto pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));
@@ -162,8 +176,11 @@ void FixSPHSoilRefine::init()
   if (all_walls > 0) {
     int any_type = 0;
     MPI_Allreduce(&wall_type, &any_type, 1, MPI_INT, MPI_MAX, world);
-    error->all(FLERR, "Fix sph/soil/refine: group {} contains {} wall particles (e.g. type {}); "
-                      "refine soil particles only", group->names[igroup], all_walls, any_type);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Fix sph/soil/refine: group {} contains {} wall particles (e.g. type {}); "
+        "refine soil particles only",
+        group->names[igroup], all_walls, any_type);
   }
 }
 
@@ -345,11 +362,13 @@ void FixSPHSoilRefine::end_of_step()
   const double after = (double) atom->natoms +
       (double) all_candidates * (SPHSoil::daughter_count(domain->dimension) - 1);
   if (node_bytes > 0.0 && after * bytes_per_particle > node_bytes)
-    error->all(FLERR, "Fix sph/soil/refine: splitting {} particles at step {} would make {:.3g} "
-                      "particles, about {:.3g} GB at {:.0f} bytes each, more than the {:.3g} GB of "
-                      "the node(s) of this run; lower maxlevel or limit the refinement to a region",
-               all_candidates, update->ntimestep, after, after * bytes_per_particle / 1e9,
-               bytes_per_particle, node_bytes / 1e9);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Fix sph/soil/refine: splitting {} particles at step {} would make {:.3g} "
+        "particles, about {:.3g} GB at {:.0f} bytes each, more than the {:.3g} GB of "
+        "the node(s) of this run; lower maxlevel or limit the refinement to a region",
+        all_candidates, update->ntimestep, after, after * bytes_per_particle / 1e9,
+        bytes_per_particle, node_bytes / 1e9);
 
   const int nlocal_before = atom->nlocal;
   last_split = splitter->split(parents);

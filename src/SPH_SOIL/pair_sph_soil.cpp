@@ -16,6 +16,7 @@
 #include "neighbor.h"
 #include "soil_artificial_stress.h"
 #include "soil_packed_rows.h"
+#include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
@@ -118,14 +119,16 @@ void PairSPHSoil::settings(int narg, char **arg)
       {"wall",
        [&](const char *v) {
          if (strcmp(v, "noslip") != 0 && strcmp(v, "freeslip") != 0)
-           error->all(FLERR, "Illegal pair_style sph/soil wall {}: must be noslip or freeslip", v);
+           SPHSoilCompat::error_all(
+               lmp, FLERR, "Illegal pair_style sph/soil wall {}: must be noslip or freeslip", v);
          free_slip = strcmp(v, "freeslip") == 0;
        }},
       {"kernel",
        [&](const char *v) {
          if (!SPHSoil::kernel_kind(v, kernel))
-           error->all(FLERR, "Illegal pair_style sph/soil kernel {}: must be one of {}", v,
-                      SPHSoil::kernel_names());
+           SPHSoilCompat::error_all(lmp, FLERR,
+                                    "Illegal pair_style sph/soil kernel {}: must be one of {}", v,
+                                    SPHSoil::kernel_names());
        }},
       {"artificial_stress",
        [&](const char *v) {
@@ -135,20 +138,24 @@ void PairSPHSoil::settings(int narg, char **arg)
       {"continuity",
        [&](const char *v) {
          if (strcmp(v, "volume") != 0 && strcmp(v, "mass") != 0)
-           error->all(FLERR, "Illegal pair_style sph/soil continuity {}: must be volume or mass",
-                      v);
+           SPHSoilCompat::error_all(
+               lmp, FLERR, "Illegal pair_style sph/soil continuity {}: must be volume or mass", v);
          continuity_volume = strcmp(v, "volume") == 0;
        }},
   };
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
-      error->all(FLERR, "Illegal pair_style sph/soil command: keyword {} needs a value", arg[iarg]);
+      SPHSoilCompat::error_all(
+          lmp, FLERR, "Illegal pair_style sph/soil command: keyword {} needs a value", arg[iarg]);
     if (strcmp(arg[iarg], "fit") == 0)
       // moved in 2026-12: say where to, rather than "unknown keyword"
-      error->all(FLERR, "Illegal pair_style sph/soil keyword fit: the Drucker-Prager fit is now a "
-                        "parameter of the material ('soil rho0 drucker_prager K nu phi psi c fit {}' "
-                        "in pair_coeff or a material file); by default it is the fit exact for the "
-                        "dilatancy angle", arg[iarg + 1]);
+      SPHSoilCompat::error_all(
+          lmp, FLERR,
+          "Illegal pair_style sph/soil keyword fit: the Drucker-Prager fit is now a "
+          "parameter of the material ('soil rho0 drucker_prager K nu phi psi c fit {}' "
+          "in pair_coeff or a material file); by default it is the fit exact for the "
+          "dilatancy angle",
+          arg[iarg + 1]);
     bool known = false;
     for (const auto &k : keywords)
       if (strcmp(arg[iarg], k.first) == 0) {
@@ -158,7 +165,8 @@ void PairSPHSoil::settings(int narg, char **arg)
     if (!known) {
       std::string allowed;
       for (const auto &k : keywords) allowed += (allowed.empty() ? "" : ", ") + std::string(k.first);
-      error->all(FLERR, "Illegal pair_style sph/soil keyword {} (allowed: {})", arg[iarg], allowed);
+      SPHSoilCompat::error_all(lmp, FLERR, "Illegal pair_style sph/soil keyword {} (allowed: {})",
+                               arg[iarg], allowed);
     }
   }
 }
@@ -180,7 +188,8 @@ void PairSPHSoil::coeff(int narg, char **arg)
 void PairSPHSoil::init_style()
 {
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
-  if (!avec) error->all(FLERR, "Pair style sph/soil requires atom_style sph/soil");
+  if (!avec)
+    SPHSoilCompat::error_all(lmp, FLERR, "Pair style sph/soil requires atom_style sph/soil");
 
   // the cutoff follows the largest smoothing length; every particle needs h > 0
   const int nlocal = atom->nlocal;
@@ -189,13 +198,16 @@ void PairSPHSoil::init_style()
   const auto no_h = SPHSoilOffenders::find_offenders(
       lmp, [&](int i) { return materials.has(type[i]) && !(h[i] > 0.0); }, [](int, double *) {});
   if (no_h)
-    error->all(FLERR, "Pair sph/soil: atom {} has smoothing length h <= 0; set it with "
-                      "'sph_soil/set <group> h <value>'", no_h.first);
+    SPHSoilCompat::error_all(lmp, FLERR,
+                             "Pair sph/soil: atom {} has smoothing length h <= 0; set it with "
+                             "'sph_soil/set <group> h <value>'",
+                             no_h.first);
   double local_max = 0.0;
   for (int i = 0; i < nlocal; i++)
     if (materials.has(type[i])) local_max = MAX(local_max, h[i]);
   MPI_Allreduce(&local_max, &max_h, 1, MPI_DOUBLE, MPI_MAX, world);
-  if (max_h <= 0.0) error->all(FLERR, "Pair sph/soil: no particle with a material and h > 0");
+  if (max_h <= 0.0)
+    SPHSoilCompat::error_all(lmp, FLERR, "Pair sph/soil: no particle with a material and h > 0");
   check_list_fits();
 
   // every type has a material here (init_one stops otherwise)
@@ -234,8 +246,10 @@ void PairSPHSoil::init_style()
 double PairSPHSoil::init_one(int i, int j)
 {
   if (setflag[i][j] == 0)
-    error->all(FLERR, "All pair coeffs are not set: pair sph/soil needs a material for atom "
-                      "types {} and {}", i, j);
+    SPHSoilCompat::error_all(lmp, FLERR,
+                             "All pair coeffs are not set: pair sph/soil needs a material for atom "
+                             "types {} and {}",
+                             i, j);
   const SoilMaterial &mi = materials.of(i), &mj = materials.of(j);
   if (mi.is_wall() && mj.is_wall()) {
     // wall particles never interact with each other: only within the skin
@@ -356,8 +370,11 @@ void PairSPHSoil::read_restart_settings(FILE *fp)
   if (comm->me == 0) utils::sfread(FLERR, &format, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&format, 1, MPI_INT, 0, world);
   if (format != RESTART_FORMAT && format != 1)
-    error->all(FLERR, "Restart file holds pair_style sph/soil data of format {}; this build of "
-                      "SPH_SOIL reads formats 1 to {}", format, RESTART_FORMAT);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Restart file holds pair_style sph/soil data of format {}; this build of "
+        "SPH_SOIL reads formats 1 to {}",
+        format, RESTART_FORMAT);
   const int nflags = format == 1 ? 2 : 3;
   if (comm->me == 0) {
     utils::sfread(FLERR, flags, sizeof(int), nflags, fp, nullptr, error);

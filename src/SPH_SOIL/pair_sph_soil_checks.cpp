@@ -10,9 +10,10 @@
 #include "domain.h"
 #include "error.h"
 #include "math_const.h"
-#include "soil_refine_split.h"
 #include "neighbor.h"
 #include "soil_kernels.h"
+#include "soil_refine_split.h"
+#include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
 #include "sph_soil_memory.h"
 #include "sph_soil_offenders.h"
@@ -150,10 +151,12 @@ void PairSPHSoil::check_list_fits()
   const double bytes = (double) atom->natoms * partners * sizeof(int);
   const auto nodes = SPHSoilMemory::nodes(world);
   if (nodes.bytes > 0.0 && bytes > nodes.bytes)
-    error->all(FLERR, "Pair sph/soil: h/d up to {:.3g} gives each particle about {:.3g} neighbours, "
-                      "{:.3g} GB for the pair list of {} particles, more than the {:.3g} GB of the "
-                      "node(s) of this run; h is usually 1.2 to 2 times the spacing d = (m/rho)^(1/{})",
-               worst_all, 2.0 * partners, bytes / 1e9, atom->natoms, nodes.bytes / 1e9, dimension);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Pair sph/soil: h/d up to {:.3g} gives each particle about {:.3g} neighbours, "
+        "{:.3g} GB for the pair list of {} particles, more than the {:.3g} GB of the "
+        "node(s) of this run; h is usually 1.2 to 2 times the spacing d = (m/rho)^(1/{})",
+        worst_all, 2.0 * partners, bytes / 1e9, atom->natoms, nodes.bytes / 1e9, dimension);
 }
 
 /* ----------------------------------------------------------------------

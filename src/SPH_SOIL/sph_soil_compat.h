@@ -29,9 +29,13 @@
    - Input::command, the command being executed: protected in 29Sep2021
      (whether it can be read; before, read_restart is told from the atom_style
      command by the first argument of the command in hand)
-   - Error::one() with exceptions on: 29Sep2021 writes the message but does
-     not flush screen and log before main() calls MPI_Abort, so a batch run
-     lost it; error_one() flushes on every release (no detection needed)
+   - Error::one() and Error::all() with exceptions on: 29Sep2021 writes the
+     message but does not flush screen and log. After one() its main() calls
+     MPI_Abort, which discards unflushed output; after all() every rank calls
+     exit(1), and mpirun may kill rank 0 (whose log holds the message, less
+     than a buffer) when another rank exits first. error_one() and error_all()
+     flush on every release (no detection needed); the package raises its
+     errors through them only.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SPH_SOIL_COMPAT_H
@@ -213,22 +217,41 @@ inline bool atom_style_from_restart(LAMMPS *lmp)
 /* ---------------------------------------------------------------------- */
 // Errors
 
-// error->one(), but the message surely reaches this rank's screen and log in a batch run:
-// with exceptions on, LAMMPS 29Sep2021 writes it and throws without flushing, and its main()
-// then calls MPI_Abort, which discards unflushed output.
+namespace detail {
+  // raise() throws (exceptions on) or exits; what LAMMPS wrote before is flushed first
+  template <class Raise> [[noreturn]] void flushed(LAMMPS *lmp, Raise raise)
+  {
+    try {
+      raise();
+    } catch (...) {
+      if (lmp->screen) fflush(lmp->screen);
+      if (lmp->logfile) fflush(lmp->logfile);
+      throw;
+    }
+    // without exceptions Error::one() and all() end the process; this is never reached
+    throw;
+  }
+}    // namespace detail
+
+// error->one(), but the message surely reaches this rank's screen and log in a batch run
 template <typename... Args>
 [[noreturn]] void error_one(LAMMPS *lmp, const std::string &file, int line,
                             const std::string &format, Args &&...args)
 {
-  try {
+  detail::flushed(lmp, [&] {
     lmp->error->one(file, line, format, std::forward<Args>(args)...);
-  } catch (...) {
-    if (lmp->screen) fflush(lmp->screen);
-    if (lmp->logfile) fflush(lmp->logfile);
-    throw;
-  }
-  // without exceptions Error::one() aborts itself; this is never reached
-  throw;
+  });
+}
+
+// error->all(), but the message surely reaches the screen and the log of a batch run on any
+// number of ranks
+template <typename... Args>
+[[noreturn]] void error_all(LAMMPS *lmp, const std::string &file, int line,
+                            const std::string &format, Args &&...args)
+{
+  detail::flushed(lmp, [&] {
+    lmp->error->all(file, line, format, std::forward<Args>(args)...);
+  });
 }
 
 }    // namespace SPHSoilCompat

@@ -12,8 +12,8 @@
 #ifndef LMP_SPH_SOIL_INPUT_H
 #define LMP_SPH_SOIL_INPUT_H
 
-#include "error.h"
 #include "lammps.h"
+#include "sph_soil_compat.h"
 #include "utils.h"
 
 #include <cmath>
@@ -77,9 +77,9 @@ inline double number(const char *file, int line, LAMMPS *lmp, const std::string 
   if (!range.contains(value)) {
     const std::string allowed = range.describe();
     if (std::isfinite(value))
-      lmp->error->all(file, line, "Illegal {} {}: must be {}", what, text, allowed);
-    lmp->error->all(file, line, "Illegal {} {}: must be a finite number{}{}", what, text,
-                    allowed.empty() ? "" : " ", allowed);
+      SPHSoilCompat::error_all(lmp, file, line, "Illegal {} {}: must be {}", what, text, allowed);
+    SPHSoilCompat::error_all(lmp, file, line, "Illegal {} {}: must be a finite number{}{}", what,
+                             text, allowed.empty() ? "" : " ", allowed);
   }
   return value;
 }
@@ -90,7 +90,8 @@ inline int integer(const char *file, int line, LAMMPS *lmp, const std::string &w
 {
   const int value = utils::inumeric(file, line, text, false, lmp);
   if (value < lo || value > hi)
-    lmp->error->all(file, line, "Illegal {} {}: must be in {} to {}", what, text, lo, hi);
+    SPHSoilCompat::error_all(lmp, file, line, "Illegal {} {}: must be in {} to {}", what, text, lo,
+                             hi);
   return value;
 }
 

@@ -5,8 +5,8 @@
 #include "sph_soil_materials.h"
 
 #include "comm.h"
-#include "error.h"
 #include "soil_models.h"
+#include "sph_soil_compat.h"
 #include "utils.h"
 
 #include <cstdlib>
@@ -47,17 +47,22 @@ void SPHSoilMaterials::coeff(int narg, char **arg)
 {
   const int ntypes = (int) materials.size() - 1;
   if (narg < 3)
-    error->all(FLERR, "Incorrect args for pair_coeff sph/soil: expected 'I I soil rho0 model "
-                      "parameters' (models: {}), 'I I wall' or '* * file name1 ... name{}'",
-               SPHSoil::model_usages(), ntypes);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Incorrect args for pair_coeff sph/soil: expected 'I I soil rho0 model "
+        "parameters' (models: {}), 'I I wall' or '* * file name1 ... name{}'",
+        SPHSoil::model_usages(), ntypes);
 
   if (strcmp(arg[2], "soil") == 0 || strcmp(arg[2], "wall") == 0) {
     int ilo, ihi, jlo, jhi;
     utils::bounds(FLERR, arg[0], 1, ntypes, ilo, ihi, error);
     utils::bounds(FLERR, arg[1], 1, ntypes, jlo, jhi, error);
     if (ilo != jlo || ihi != jhi)
-      error->all(FLERR, "Incorrect args for pair_coeff sph/soil: a material belongs to atom types, "
-                        "so both type arguments must be the same (got {} {})", arg[0], arg[1]);
+      SPHSoilCompat::error_all(
+          lmp, FLERR,
+          "Incorrect args for pair_coeff sph/soil: a material belongs to atom types, "
+          "so both type arguments must be the same (got {} {})",
+          arg[0], arg[1]);
     const std::vector<std::string> words(arg + 2, arg + narg);
     const std::string name = fmt::format("of type(s) {}", arg[0]);
     for (int type = ilo; type <= ihi; type++) set_from_words(type, name, words);
@@ -65,12 +70,18 @@ void SPHSoilMaterials::coeff(int narg, char **arg)
   }
 
   if (strcmp(arg[0], "*") != 0 || strcmp(arg[1], "*") != 0)
-    error->all(FLERR, "Incorrect args for pair_coeff sph/soil: unknown material kind '{}' for "
-                      "types {} {} (allowed: soil, wall; a material file takes '* * file name1 ... "
-                      "name{}')", arg[2], arg[0], arg[1], ntypes);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Incorrect args for pair_coeff sph/soil: unknown material kind '{}' for "
+        "types {} {} (allowed: soil, wall; a material file takes '* * file name1 ... "
+        "name{}')",
+        arg[2], arg[0], arg[1], ntypes);
   if (narg != 3 + ntypes)
-    error->all(FLERR, "Incorrect args for pair_coeff sph/soil: a material file needs one name (or "
-                      "NULL) per atom type, {} expected, {} given", ntypes, narg - 3);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Incorrect args for pair_coeff sph/soil: a material file needs one name (or "
+        "NULL) per atom type, {} expected, {} given",
+        ntypes, narg - 3);
   std::vector<SoilMaterial> list;
   read_file(arg[2], list);
   for (int type = 1; type <= ntypes; type++) {
@@ -80,8 +91,9 @@ void SPHSoilMaterials::coeff(int narg, char **arg)
     for (const auto &m : list)
       if (m.name == name) found = &m;
     if (!found)
-      error->all(FLERR, "pair_coeff sph/soil: material {} for atom type {} is not in file {}",
-                 name, type, arg[2]);
+      SPHSoilCompat::error_all(
+          lmp, FLERR, "pair_coeff sph/soil: material {} for atom type {} is not in file {}", name,
+          type, arg[2]);
     set(type, *found);
   }
 }
@@ -92,7 +104,7 @@ void SPHSoilMaterials::set_from_words(int type, const std::string &name,
   SoilMaterial material;
   std::string problem;
   if (!SPHSoil::material_from_words(name, words, material, problem))
-    error->all(FLERR, "Incorrect args for pair_coeff sph/soil: {}", problem);
+    SPHSoilCompat::error_all(lmp, FLERR, "Incorrect args for pair_coeff sph/soil: {}", problem);
   set(type, material);
 }
 
@@ -133,14 +145,17 @@ void SPHSoilMaterials::read_file(const char *file, std::vector<SoilMaterial> &li
     }
   }
   MPI_Bcast(&ok, 1, MPI_INT, 0, world);
-  if (!ok) error->all(FLERR, "Cannot open material file {} for pair_coeff sph/soil", file);
+  if (!ok)
+    SPHSoilCompat::error_all(lmp, FLERR, "Cannot open material file {} for pair_coeff sph/soil",
+                             file);
   int length = text.size();
   MPI_Bcast(&length, 1, MPI_INT, 0, world);
   text.resize(length);
   MPI_Bcast(&text[0], length, MPI_CHAR, 0, world);
   std::string problem;
   if (!SPHSoil::parse_material_file(text, list, problem))
-    error->all(FLERR, "Invalid material file {} for pair_coeff sph/soil: {}", file, problem);
+    SPHSoilCompat::error_all(lmp, FLERR, "Invalid material file {} for pair_coeff sph/soil: {}",
+                             file, problem);
 }
 
 /* ----------------------------------------------------------------------

@@ -30,25 +30,35 @@ const char *const STYLE = "sph_soil/refine";
 
 void SPHSoilRefine::command(int narg, char **arg)
 {
-  if (domain->box_exist == 0) error->all(FLERR, "sph_soil/refine command before simulation box is defined");
-  if (narg < 1) error->all(FLERR, "Illegal sph_soil/refine command: expected 'sph_soil/refine group-ID keyword value ...'");
-  if (!atom->style_match("sph/soil")) error->all(FLERR, "sph_soil/refine command requires atom_style sph/soil");
+  if (domain->box_exist == 0)
+    SPHSoilCompat::error_all(lmp, FLERR,
+                             "sph_soil/refine command before simulation box is defined");
+  if (narg < 1)
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Illegal sph_soil/refine command: expected 'sph_soil/refine group-ID keyword value ...'");
+  if (!atom->style_match("sph/soil"))
+    SPHSoilCompat::error_all(lmp, FLERR, "sph_soil/refine command requires atom_style sph/soil");
   const int igroup = group->find(arg[0]);
-  if (igroup == -1) error->all(FLERR, "Could not find sph_soil/refine group ID {}", arg[0]);
+  if (igroup == -1)
+    SPHSoilCompat::error_all(lmp, FLERR, "Could not find sph_soil/refine group ID {}", arg[0]);
   const int groupbit = group->bitmask[igroup];
 
   SPHSoilRefineSplitter splitter(lmp, STYLE);
   SPHSoilRefineSelection selection(lmp, STYLE, "all");
   for (int iarg = 1; iarg < narg; iarg += 2) {
     const std::string keyword = arg[iarg];
-    if (iarg + 1 >= narg) error->all(FLERR, "Illegal sph_soil/refine command: keyword {} needs a value", keyword);
+    if (iarg + 1 >= narg)
+      SPHSoilCompat::error_all(
+          lmp, FLERR, "Illegal sph_soil/refine command: keyword {} needs a value", keyword);
     const char *value = arg[iarg + 1];
     if (!selection.parse_keyword(keyword, value) && !splitter.parse_keyword(STYLE, keyword, value))
-      error->all(FLERR, "Illegal sph_soil/refine keyword {} (allowed: {}, {})", keyword,
-                 SPHSoilRefineSelection::keywords(), SPHSoilRefineSplitter::KEYWORDS);
+      SPHSoilCompat::error_all(lmp, FLERR, "Illegal sph_soil/refine keyword {} (allowed: {}, {})",
+                               keyword, SPHSoilRefineSelection::keywords(),
+                               SPHSoilRefineSplitter::KEYWORDS);
   }
   if (force->pair == nullptr || !force->pair_match("sph/soil", 1))
-    error->all(FLERR, "sph_soil/refine command requires pair_style sph/soil");
+    SPHSoilCompat::error_all(lmp, FLERR, "sph_soil/refine command requires pair_style sph/soil");
 
   if (comm->me == 0) utils::logmesg(lmp, "System init for sph_soil/refine ...\n");
   lmp->init();
@@ -62,8 +72,10 @@ void SPHSoilRefine::command(int narg, char **arg)
     if ((atom->mask[i] & groupbit) && pair->is_wall_type(atom->type[i])) walls++;
   MPI_Allreduce(&walls, &all_walls, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (all_walls > 0)
-    error->all(FLERR, "sph_soil/refine: group {} contains {} wall particles; refine soil particles only",
-               arg[0], all_walls);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "sph_soil/refine: group {} contains {} wall particles; refine soil particles only", arg[0],
+        all_walls);
 
   // the ghosts, the way delete_atoms overlap sets them up
   if (domain->triclinic) domain->x2lamda(atom->nlocal);

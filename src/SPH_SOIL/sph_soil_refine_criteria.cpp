@@ -4,7 +4,7 @@
 
 #include "sph_soil_refine_criteria.h"
 
-#include "error.h"
+#include "sph_soil_compat.h"
 #include "sph_soil_refine_criterion_all.h"
 #include "sph_soil_refine_criterion_strain.h"
 #include "sph_soil_refine_criterion_variable.h"
@@ -68,8 +68,8 @@ std::unique_ptr<SPHSoilRefineCriterion> LAMMPS_NS::make_refine_criterion(LAMMPS 
 {
   for (const auto &c : refine_criteria())
     if (matches(c, word)) return std::unique_ptr<SPHSoilRefineCriterion>(c.make(lmp, word));
-  lmp->error->all(FLERR, "Illegal {} criterion {} (allowed: {})", command, word,
-                  refine_criterion_names());
+  SPHSoilCompat::error_all(lmp, FLERR, "Illegal {} criterion {} (allowed: {})", command, word,
+                           refine_criterion_names());
   return nullptr;
 }
 

@@ -12,8 +12,8 @@
 
 #include "atom.h"
 #include "atom_vec_sph_soil.h"
-#include "error.h"
 #include "soil_tensor.h"
+#include "sph_soil_compat.h"
 #include "sph_soil_input.h"
 #include "sph_soil_refine_criterion.h"
 
@@ -34,7 +34,8 @@ class SPHSoilRefineCriterionStrain : public SPHSoilRefineCriterion {
     } else if (keyword == "since") {
       const std::string word = value;
       if (word != "split" && word != "start")
-        error->all(FLERR, "Illegal {} since {}: must be split or start", command, word);
+        SPHSoilCompat::error_all(lmp, FLERR, "Illegal {} since {}: must be split or start", command,
+                                 word);
       since_split = word == "split";
     } else {
       return false;

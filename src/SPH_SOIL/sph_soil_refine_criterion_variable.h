@@ -8,8 +8,8 @@
 #define LMP_SPH_SOIL_REFINE_CRITERION_VARIABLE_H
 
 #include "atom.h"
-#include "error.h"
 #include "input.h"
+#include "sph_soil_compat.h"
 #include "sph_soil_refine_criterion.h"
 #include "variable.h"
 
@@ -27,9 +27,12 @@ class SPHSoilRefineCriterionVariable : public SPHSoilRefineCriterion {
   void init(const std::string &command) override
   {
     ivar = input->variable->find(name.c_str());
-    if (ivar < 0) error->all(FLERR, "{} criterion v_{}: variable {} does not exist", command, name, name);
+    if (ivar < 0)
+      SPHSoilCompat::error_all(lmp, FLERR, "{} criterion v_{}: variable {} does not exist", command,
+                               name, name);
     if (!input->variable->atomstyle(ivar))
-      error->all(FLERR, "{} criterion v_{}: variable {} must be atom-style", command, name, name);
+      SPHSoilCompat::error_all(lmp, FLERR, "{} criterion v_{}: variable {} must be atom-style",
+                               command, name, name);
   }
   void prepare(const RefineHistory &) override
   {

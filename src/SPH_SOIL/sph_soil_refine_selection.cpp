@@ -37,14 +37,15 @@ bool SPHSoilRefineSelection::parse_keyword(const std::string &keyword, const cha
 {
   if (keyword == "criterion") {
     if (!criterion_keyword.empty() && criterion_word != value)
-      error->all(FLERR, "Illegal {} criterion {}: give it before {}, a keyword of criterion {}",
-                 command, value, criterion_keyword, criterion_word);
+      SPHSoilCompat::error_all(
+          lmp, FLERR, "Illegal {} criterion {}: give it before {}, a keyword of criterion {}",
+          command, value, criterion_keyword, criterion_word);
     criterion = make_refine_criterion(lmp, command, value);
     criterion_word = value;
   } else if (keyword == "region") {
     region_id = value;
     if (!SPHSoilCompat::find_region(domain, region_id))
-      error->all(FLERR, "{} region {} does not exist", command, region_id);
+      SPHSoilCompat::error_all(lmp, FLERR, "{} region {} does not exist", command, region_id);
   } else if (keyword == "buffer") {
     // up to one support: a wanted ghost is then within the ghost cut-off (the neighbour
     // list's, at least the support of the largest h) of the owned particles it buffers
@@ -57,8 +58,9 @@ bool SPHSoilRefineSelection::parse_keyword(const std::string &keyword, const cha
     for (const auto &c : refine_criteria())
       for (const auto &own : utils::split_words(c.keywords))
         if (own == keyword)
-          error->all(FLERR, "Illegal {} {}: a keyword of criterion {}, not of criterion {}", command,
-                     keyword, c.word, criterion_word);
+          SPHSoilCompat::error_all(lmp, FLERR,
+                                   "Illegal {} {}: a keyword of criterion {}, not of criterion {}",
+                                   command, keyword, c.word, criterion_word);
     return false;
   }
   return true;
@@ -71,7 +73,8 @@ void SPHSoilRefineSelection::init(double kernel_support, double ratio)
   region = nullptr;
   if (!region_id.empty()) {
     region = SPHSoilCompat::find_region(domain, region_id);
-    if (!region) error->all(FLERR, "{} region {} does not exist", command, region_id);
+    if (!region)
+      SPHSoilCompat::error_all(lmp, FLERR, "{} region {} does not exist", command, region_id);
   }
   criterion->init(command);
 }

@@ -12,14 +12,14 @@
 #include "atom_vec_sph_soil.h"
 #include "comm.h"
 #include "domain.h"
-#include "error.h"
 #include "force.h"
 #include "pair.h"
-#include "sph_soil_materials.h"
 #include "soil_constitutive.h"
 #include "soil_material.h"
 #include "soil_neighbours.h"
 #include "soil_refine_split.h"
+#include "sph_soil_compat.h"
+#include "sph_soil_materials.h"
 
 #include <algorithm>
 #include <cmath>
@@ -70,9 +70,9 @@ bool SPHSoilRefineSplitter::parse_keyword(const std::string &command, const std:
 void SPHSoilRefineSplitter::init()
 {
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
-  if (!avec) error->all(FLERR, "{} requires atom_style sph/soil", who);
+  if (!avec) SPHSoilCompat::error_all(lmp, FLERR, "{} requires atom_style sph/soil", who);
   Pair *pair = force->pair_match("sph/soil", 1);
-  if (!pair) error->all(FLERR, "{} requires pair_style sph/soil", who);
+  if (!pair) SPHSoilCompat::error_all(lmp, FLERR, "{} requires pair_style sph/soil", who);
   int dim;
   materials = static_cast<const SPHSoilMaterials *>(pair->extract("sph_soil_materials", dim));
   kernel = *static_cast<const SPHSoil::KernelKind *>(pair->extract("sph_soil_kernel", dim));
@@ -142,7 +142,8 @@ std::vector<tagint> SPHSoilRefineSplitter::first_new_tags(const std::vector<int>
     offsets[p] = (int) total;
     total += counts[p];
   }
-  if (total > MAXSMALLINT) error->all(FLERR, "{}: too many particles split at once ({})", who, total);
+  if (total > MAXSMALLINT)
+    SPHSoilCompat::error_all(lmp, FLERR, "{}: too many particles split at once ({})", who, total);
 
   std::vector<tagint> local_tags(mine), all_tags(total > 0 ? total : 1);
   for (int n = 0; n < mine; n++) local_tags[n] = atom->tag[parents[n]];
@@ -157,7 +158,8 @@ std::vector<tagint> SPHSoilRefineSplitter::first_new_tags(const std::vector<int>
 
   const int new_per_parent = daughter_count(domain->dimension) - 1;
   if ((double) maxtag_all + (double) total * new_per_parent >= (double) MAXTAGINT)
-    error->all(FLERR, "{}: new atom IDs would exceed the largest allowed ID", who);
+    SPHSoilCompat::error_all(lmp, FLERR, "{}: new atom IDs would exceed the largest allowed ID",
+                             who);
 
   std::vector<tagint> first(mine);
   for (int n = 0; n < mine; n++) {
@@ -171,7 +173,7 @@ std::vector<tagint> SPHSoilRefineSplitter::first_new_tags(const std::vector<int>
 
 bigint SPHSoilRefineSplitter::split(const std::vector<int> &parents)
 {
-  if (!atom->tag_enable) error->all(FLERR, "{} requires atom IDs", who);
+  if (!atom->tag_enable) SPHSoilCompat::error_all(lmp, FLERR, "{} requires atom IDs", who);
   bigint total = 0;
   const std::vector<tagint> first_tag = first_new_tags(parents, total);
   if (total == 0) return 0;
@@ -244,11 +246,13 @@ void SPHSoilRefineSplitter::stop_if_outside_box(const std::vector<int> &parents,
         for (int a = 0; a < 3; a++) values[a] = daughters.position[(size_t) outside[i] * 3 + a];
       });
   if (lost)
-    error->all(FLERR, "{}: splitting {} particle(s) would put daughters outside the box through a "
-                      "fixed boundary (atom {}: a daughter at {:.6g} {:.6g} {:.6g}); keep the split particles "
-                      "separation * d_p / 2 away from fixed boundaries (e.g. with a region), or "
-                      "make the boundary shrink-wrapped", who, lost.count, lost.first,
-               lost.values[0], lost.values[1], lost.values[2]);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "{}: splitting {} particle(s) would put daughters outside the box through a "
+        "fixed boundary (atom {}: a daughter at {:.6g} {:.6g} {:.6g}); keep the split particles "
+        "separation * d_p / 2 away from fixed boundaries (e.g. with a region), or "
+        "make the boundary shrink-wrapped",
+        who, lost.count, lost.first, lost.values[0], lost.values[1], lost.values[2]);
 }
 
 /* ----------------------------------------------------------------------

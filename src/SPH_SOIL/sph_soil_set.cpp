@@ -8,10 +8,10 @@
 #include "atom_vec_sph_soil.h"
 #include "comm.h"
 #include "domain.h"
-#include "error.h"
 #include "group.h"
 #include "input.h"
 #include "soil_refine_split.h"
+#include "sph_soil_compat.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
 #include "utils.h"
@@ -47,13 +47,18 @@ const std::vector<SPHSoilSet::Keyword> &SPHSoilSet::keywords()
 void SPHSoilSet::command(int narg, char **arg)
 {
   if (domain->box_exist == 0)
-    error->all(FLERR, "sph_soil/set command before simulation box is defined");
-  if (narg < 2) error->all(FLERR, "Illegal sph_soil/set command: expected 'sph_soil/set group-ID keyword value ...'");
+    SPHSoilCompat::error_all(lmp, FLERR, "sph_soil/set command before simulation box is defined");
+  if (narg < 2)
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Illegal sph_soil/set command: expected 'sph_soil/set group-ID keyword value ...'");
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
-  if (!avec) error->all(FLERR, "sph_soil/set command requires atom_style sph/soil");
+  if (!avec)
+    SPHSoilCompat::error_all(lmp, FLERR, "sph_soil/set command requires atom_style sph/soil");
 
   const int igroup = group->find(arg[0]);
-  if (igroup == -1) error->all(FLERR, "Could not find sph_soil/set group ID {}", arg[0]);
+  if (igroup == -1)
+    SPHSoilCompat::error_all(lmp, FLERR, "Could not find sph_soil/set group ID {}", arg[0]);
   groupbit = group->bitmask[igroup];
 
   if (comm->me == 0) utils::logmesg(lmp, "Setting sph/soil atom values ...\n");
@@ -73,12 +78,14 @@ void SPHSoilSet::command(int narg, char **arg)
     if (!found) {
       std::string allowed;
       for (const auto &k : keywords()) allowed += (allowed.empty() ? "" : ", ") + std::string(k.name);
-      error->all(FLERR, "Illegal sph_soil/set command: unknown keyword {} (allowed: {})", keyword,
-                 allowed);
+      SPHSoilCompat::error_all(lmp, FLERR,
+                               "Illegal sph_soil/set command: unknown keyword {} (allowed: {})",
+                               keyword, allowed);
     }
     if (iarg + found->count >= narg)
-      error->all(FLERR, "Illegal sph_soil/set command: keyword {} needs {} value(s)", keyword,
-                 found->count);
+      SPHSoilCompat::error_all(lmp, FLERR,
+                               "Illegal sph_soil/set command: keyword {} needs {} value(s)",
+                               keyword, found->count);
     const int extra = (this->*(found->apply))(keyword, arg + iarg + 1, narg - iarg - 1);
     iarg += 1 + found->count + extra;
     if (comm->me == 0) utils::logmesg(lmp, "  {} settings made for {}\n", total, keyword);
@@ -136,9 +143,10 @@ int SPHSoilSet::set_tensor(const std::string &keyword, char **args, int)
           lmp, [&](int i) { return in_group(i) && values[i] != 0.0; },
           [&](int i, double *out) { out[0] = values[i]; });
       if (shear)
-        error->all(FLERR, "Illegal sph_soil/set {}: the {} component must be 0 in 2D (plane "
-                          "strain), got {} for atom {}", keyword, k == 4 ? "xz" : "yz",
-                   shear.values[0], shear.first);
+        SPHSoilCompat::error_all(lmp, FLERR,
+                                 "Illegal sph_soil/set {}: the {} component must be 0 in 2D (plane "
+                                 "strain), got {} for atom {}",
+                                 keyword, k == 4 ? "xz" : "yz", shear.values[0], shear.first);
     }
     for (int i = 0; i < atom->nlocal; i++)
       if (in_group(i)) target[i][k] = values[i];
@@ -165,12 +173,16 @@ int SPHSoilSet::set_geostatic(const std::string &, char **args, int available)
   int extra = 0;
   if (available > 4 && strcmp(args[4], "vertical") == 0) {
     if (available < 6)
-      error->all(FLERR, "Illegal sph_soil/set geostatic vertical: needs an axis (x, y or z)");
+      SPHSoilCompat::error_all(
+          lmp, FLERR, "Illegal sph_soil/set geostatic vertical: needs an axis (x, y or z)");
     const std::string axis = args[5];
     vertical = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : -1;
     if (vertical < 0 || (domain->dimension == 2 && vertical == 2))
-      error->all(FLERR, "Illegal sph_soil/set geostatic vertical {}: must be x or y in 2D, x, y "
-                        "or z in 3D", axis);
+      SPHSoilCompat::error_all(
+          lmp, FLERR,
+          "Illegal sph_soil/set geostatic vertical {}: must be x or y in 2D, x, y "
+          "or z in 3D",
+          axis);
     extra = 2;
   }
   avec->geostatic_vertical = vertical;
@@ -198,10 +210,12 @@ int SPHSoilSet::set_wall(const std::string &, char **args, int)
   }
   const double norm = sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
   if (!(norm > 0.0))
-    error->all(FLERR, "Illegal sph_soil/set wall: the normal ({} {} {}) must be non-zero",
-               normal[0], normal[1], normal[2]);
+    SPHSoilCompat::error_all(lmp, FLERR,
+                             "Illegal sph_soil/set wall: the normal ({} {} {}) must be non-zero",
+                             normal[0], normal[1], normal[2]);
   if (domain->dimension == 2 && normal[2] != 0.0)
-    error->all(FLERR, "Illegal sph_soil/set wall: the normal must lie in the xy plane in 2D");
+    SPHSoilCompat::error_all(
+        lmp, FLERR, "Illegal sph_soil/set wall: the normal must lie in the xy plane in 2D");
   for (int k = 0; k < 3; k++) normal[k] /= norm;
   double **x = atom->x;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -236,10 +250,12 @@ SPHSoilSet::Value SPHSoilSet::parse_value(const std::string &keyword, const char
     value.variable = arg + 2;
     const int ivar = input->variable->find(value.variable.c_str());
     if (ivar < 0)
-      error->all(FLERR, "Variable name {} for sph_soil/set {} does not exist", value.variable, keyword);
+      SPHSoilCompat::error_all(lmp, FLERR, "Variable name {} for sph_soil/set {} does not exist",
+                               value.variable, keyword);
     if (!input->variable->equalstyle(ivar) && !input->variable->atomstyle(ivar))
-      error->all(FLERR, "Variable {} for sph_soil/set {} must be equal-style or atom-style",
-                 value.variable, keyword);
+      SPHSoilCompat::error_all(lmp, FLERR,
+                               "Variable {} for sph_soil/set {} must be equal-style or atom-style",
+                               value.variable, keyword);
   } else {
     value.constant = SPHSoilInput::number(FLERR, lmp, "sph_soil/set " + keyword, arg);
   }
@@ -277,6 +293,6 @@ void SPHSoilSet::check_range(const std::string &keyword, const std::vector<doubl
       },
       [&](int i, double *out) { out[0] = values[i]; });
   if (bad)
-    error->all(FLERR, "Illegal sph_soil/set {} value {} for atom {}: must be {}", keyword,
-               bad.values[0], bad.first, allowed);
+    SPHSoilCompat::error_all(lmp, FLERR, "Illegal sph_soil/set {} value {} for atom {}: must be {}",
+                             keyword, bad.values[0], bad.first, allowed);
 }

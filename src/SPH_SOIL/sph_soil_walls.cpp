@@ -72,9 +72,12 @@ void SPHSoilWalls::classify(const std::vector<SoilMaterial> &materials,
     has_mirror = has_mirror || !extrapolated;
     // free slip and friction act across a plane; an extrapolated wall has none
     if (extrapolated && slip != WallSlip::noslip)
-      error->all(FLERR, "Pair sph/soil: wall type {} has boundary extrapolate with {}: an "
-                        "extrapolated wall is no-slip (free slip and friction need the plane of "
-                        "'boundary mirror')", t, slip == WallSlip::freeslip ? "freeslip" : "friction");
+      SPHSoilCompat::error_all(
+          lmp, FLERR,
+          "Pair sph/soil: wall type {} has boundary extrapolate with {}: an "
+          "extrapolated wall is no-slip (free slip and friction need the plane of "
+          "'boundary mirror')",
+          t, slip == WallSlip::freeslip ? "freeslip" : "friction");
     slip_of_type[t] = slip == WallSlip::noslip ? SLIP_NONE
         : slip == WallSlip::freeslip           ? SLIP_FREE
                                                : SLIP_FRICTION;
@@ -130,10 +133,12 @@ void SPHSoilWalls::check_particles() const
         values[3] = type[i];
       });
   if (no_plane)
-    error->all(FLERR, "Pair sph/soil: {} wall particle(s) have no wall plane (atom {} of type {} at "
-                      "{} {} {}); set it with 'sph_soil/set <group> wall px py pz nx ny nz'",
-               no_plane.count, no_plane.first, (int) no_plane.values[3], no_plane.values[0],
-               no_plane.values[1], no_plane.values[2]);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Pair sph/soil: {} wall particle(s) have no wall plane (atom {} of type {} at "
+        "{} {} {}); set it with 'sph_soil/set <group> wall px py pz nx ny nz'",
+        no_plane.count, no_plane.first, (int) no_plane.values[3], no_plane.values[0],
+        no_plane.values[1], no_plane.values[2]);
   // behind the plane: distance >= 0 (a round-off margin for particles on the plane)
   const auto in_front = find_offenders(
       lmp, [&](int i) { return mirror(i) && distance[i] < -1.0e-9 * h[i]; },
@@ -142,11 +147,14 @@ void SPHSoilWalls::check_particles() const
         for (int a = 0; a < 3; a++) values[1 + a] = normal[i][a];
       });
   if (in_front)
-    error->all(FLERR, "Pair sph/soil: {} wall particle(s) lie in front of their wall plane (atom "
-                      "{}: distance {} along the normal {} {} {}); the normal given to "
-                      "'sph_soil/set <group> wall' must point into the soil, with the wall "
-                      "particles behind the plane", in_front.count, in_front.first,
-               in_front.values[0], in_front.values[1], in_front.values[2], in_front.values[3]);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Pair sph/soil: {} wall particle(s) lie in front of their wall plane (atom "
+        "{}: distance {} along the normal {} {} {}); the normal given to "
+        "'sph_soil/set <group> wall' must point into the soil, with the wall "
+        "particles behind the plane",
+        in_front.count, in_front.first, in_front.values[0], in_front.values[1], in_front.values[2],
+        in_front.values[3]);
 }
 
 /* ----------------------------------------------------------------------
@@ -184,11 +192,15 @@ void SPHSoilWalls::create_kinematics()
       }
   if (index < 0) modify->add_fix(kinematics_id + " all SPH_SOIL_WALLS");
   kinematics = dynamic_cast<FixSPHSoilWalls *>(modify->fix[modify->find_fix(kinematics_id)]);
-  if (!kinematics) error->all(FLERR, "Pair sph/soil: fix {} is not the walls' kinematics", kinematics_id);
+  if (!kinematics)
+    SPHSoilCompat::error_all(lmp, FLERR, "Pair sph/soil: fix {} is not the walls' kinematics",
+                             kinematics_id);
   if (kinematics->owner && kinematics->owner != this)
-    error->all(FLERR, "Pair sph/soil: a second instance of pair style sph/soil with walls (e.g. "
-                      "under pair_style hybrid) is not supported: fix {} belongs to the first",
-               kinematics_id);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Pair sph/soil: a second instance of pair style sph/soil with walls (e.g. "
+        "under pair_style hybrid) is not supported: fix {} belongs to the first",
+        kinematics_id);
   kinematics->owner = this;
   std::vector<int> wall_of_type(kind_of_type.size());
   for (size_t t = 0; t < kind_of_type.size(); t++) wall_of_type[t] = kind_of_type[t] != NEIGHBOUR_SOIL;
