@@ -12,6 +12,7 @@ STUDIES = [aluminium_bars, atom_style, bearing_capacity, footing, gate, landslid
 # example (examples/NAME/in.NAME) -> the study that measures and plots its single run
 EXAMPLE_REPORTS = {'aluminium_bars': aluminium_bars, 'atom_style': atom_style,
                    'bearing_capacity': bearing_capacity, 'footing': footing, 'gate': gate, 'landslide_3d': landslide,
+                   'shallow_landslide': landslide,
                    'refinement': refinement, 'retaining_wall': retaining_wall, 'sliding_block': sliding_block,
                    'slope': strength_reduction,
                    'soil_collapse': soil_collapse, 'vertical_cut': vertical_cut}

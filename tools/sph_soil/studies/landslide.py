@@ -1,18 +1,22 @@
-"""A 3D landslide over terrain (examples/landslide_3d): the deposit of a finished run, measured
-from its final dump so that refinement does not move the measures (a split keeps the volume
-where it was, not the topmost particle):
+"""A 3D landslide over terrain (examples/landslide_3d, examples/shallow_landslide): the deposit of a
+finished run, measured from its final dump so that refinement does not move the measures (a split
+keeps the volume where it was, not the topmost particle). The slide is all the soil of
+landslide_3d, and the patch that fails (type 2) of shallow_landslide, whose standing mantle is
+measured apart (how much of it moved onto the floor):
 
-  - runout_m: the x that 99% of the soil's volume lies behind (the front, without stragglers);
+  - runout_m: the x that 99% of the slide's volume lies behind (the front, without stragglers);
   - deposit_height_m: the largest thickness of the deposit, the soil's volume (mass / rho0) in a
     column of CELL x CELL over the ground divided by the cell's area, on the valley floor (beyond
     the hillside's toe); CELL is one length for every run (0.4 m, twice the coarsest spacing
     run), so that runs of any spacing are measured alike;
-  - deposit_volume_fraction_on_floor: the share of the soil's volume beyond the toe.
+  - deposit_volume_fraction_on_floor: the share of the slide's volume beyond the toe;
+  - standing_volume_on_floor_m3 (shallow_landslide): the mantle's volume beyond the toe.
 
 Writes JSON and a plot: the deposit's thickness seen from above, and the front against time
 (landslide.dat).
 
   python3 -m sph_soil landslide [--dir examples/landslide_3d] [--json FILE] [--plot FILE]
+  python3 -m sph_soil landslide --dir examples/shallow_landslide
 """
 import os
 import re
@@ -23,8 +27,10 @@ from .. import logs, paths, report
 from ..dumps import read_ave_time, read_dump
 
 COMMAND = 'landslide'
-DUMP = 'dump.landslide_3d.final'
-RHO0 = 1850.0       # in.landslide_3d's soil density (kg/m^3)
+# example -> its final dump, and the type of the soil that slides (None: all of it)
+EXAMPLES = {'landslide_3d': ('dump.landslide_3d.final', None),
+            'shallow_landslide': ('dump.shallow_landslide.final', 2)}
+RHO0 = 1850.0       # the examples' soil density (kg/m^3)
 CELL = 0.4          # the deposit's columns (m)
 
 
@@ -36,8 +42,21 @@ def terrain(directory):
             for name in ('xlo', 'xhi', 'ylo', 'yhi', 'toe')}
 
 
-def deposit(s, toe, cell=CELL):
+def example_of(directory):
+    """The example whose final dump is in `directory`."""
+    found = [name for name, (dump, _) in EXAMPLES.items() if os.path.exists(os.path.join(directory, dump))]
+    if not found:
+        raise SystemExit(f'landslide: no final dump ({", ".join(d for d, _ in EXAMPLES.values())}) in {directory}')
+    return found[0]
+
+
+def deposit(s, toe, cell=CELL, slide_type=None):
     """The measures of the module's docstring from a final dump `s` (read_dump)."""
+    standing = None
+    if slide_type is not None:
+        rest = s['type'] != slide_type
+        standing = float((s['mass'][rest] / RHO0)[s['x'][rest] > toe].sum())
+        s = {name: column[~rest] for name, column in s.items()}
     volume = s['mass'] / RHO0
     order = np.argsort(s['x'])
     cumulative = np.cumsum(volume[order]) / volume.sum()
@@ -49,9 +68,12 @@ def deposit(s, toe, cell=CELL):
     for a, b, v in zip(ix, iy, volume[floor]):
         columns[(a, b)] = columns.get((a, b), 0.0) + v
     height = max(columns.values()) / cell ** 2 if columns else 0.0
-    return {'runout_m': round(runout, 4), 'deposit_height_m': round(height, 4),
-            'deposit_volume_fraction_on_floor': round(float(volume[floor].sum() / volume.sum()), 4),
-            'soil_particles': int(len(volume)), 'deepest_level': int(s['c_soil'].max())}
+    out = {'runout_m': round(runout, 4), 'deposit_height_m': round(height, 4),
+           'deposit_volume_fraction_on_floor': round(float(volume[floor].sum() / volume.sum()), 4),
+           'soil_particles': int(len(volume)), 'deepest_level': int(s['c_soil'].max())}
+    if standing is not None:
+        out['standing_volume_on_floor_m3'] = round(standing, 4)
+    return out
 
 
 def measure(directory, spacing=None):
@@ -60,8 +82,9 @@ def measure(directory, spacing=None):
     if spacing is None:
         spacing = next(float(m.group(1)) for m in (logs.Log(path).search(r'Lattice spacing in x,y,z = (\S+)')
                                                    for path in logs.run_logs(directory)) if m)
-    s = read_dump(os.path.join(directory, DUMP))
-    out = {'spacing_m': spacing, **deposit(s, terrain(directory)['toe'])}
+    dump, slide_type = EXAMPLES[example_of(directory)]
+    s = read_dump(os.path.join(directory, dump))
+    out = {'spacing_m': spacing, **deposit(s, terrain(directory)['toe'], slide_type=slide_type)}
     return out, s
 
 
@@ -100,13 +123,15 @@ def landslide(directory, json_path=None, plot_path=None, wall_seconds=None, spac
 
 
 def report_example(directory, log, variables, seconds):
-    """run_example's numbers and plot: landslide_3d.json, landslide_3d.png."""
-    landslide(directory, os.path.join(directory, 'landslide_3d.json'),
-              os.path.join(directory, 'landslide_3d.png'), seconds, float(variables['d']))
+    """run_example's numbers and plot: EXAMPLE.json, EXAMPLE.png."""
+    name = example_of(directory)
+    landslide(directory, os.path.join(directory, f'{name}.json'), os.path.join(directory, f'{name}.png'),
+              seconds, float(variables['d']))
 
 
 def add_arguments(p):
-    report.add_run_arguments(p, paths.example_dir('landslide_3d'), f'{DUMP}, landslide.dat, terrain.lmp')
+    report.add_run_arguments(p, paths.example_dir('landslide_3d'),
+                             'a final dump, landslide.dat, terrain.lmp')
 
 
 def main(a):
