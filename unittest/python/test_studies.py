@@ -314,6 +314,22 @@ def test_landslide_deposit_by_volume():
     assert parent['deposit_height_m'] == pytest.approx(round((8e-3 + inside) / landslide.CELL ** 2, 4))
 
 
+def test_landslide_measures_the_slide_apart_from_the_standing_soil():
+    """With a slide type (shallow_landslide: the patch, type 2), the deposit is the slide's alone,
+    and the standing soil's volume beyond the toe is reported apart."""
+    import numpy as np
+    from sph_soil.studies import landslide
+    x = np.array([7.0, 7.1, 8.0, 2.0, 3.0, 6.5])
+    kind = np.array([2, 2, 2, 1, 1, 1], dtype=float)
+    volume = np.array([1e-3, 1e-3, 1e-3, 5e-3, 5e-3, 2e-3])
+    dump = {'x': x, 'y': np.zeros_like(x), 'z': np.zeros_like(x), 'mass': landslide.RHO0 * volume,
+            'c_soil': np.zeros_like(x), 'type': kind}
+    alone = landslide.deposit({k: v[kind == 2] for k, v in dump.items()}, toe=6.0)
+    both = landslide.deposit(dump, toe=6.0, slide_type=2)
+    assert both == {**alone, 'standing_volume_on_floor_m3': 0.002}
+    assert both['soil_particles'] == 3 and both['deposit_volume_fraction_on_floor'] == 1.0
+
+
 def test_runner_links_the_files_an_input_reads(tmp_path):
     """An example run in a scratch directory finds its data, STL and include files."""
     from sph_soil import runner
