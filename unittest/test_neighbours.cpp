@@ -1,6 +1,7 @@
 // The pair style's own neighbour list (soil_neighbours.h) against a brute-force search: every
 // pair within its own cutoff support * h_ij + skin (+ skin_per_h * h_ij) listed once, wall pairs
-// never, plain partners before mirror-wall partners, ghosts on one of their two ranks; a list
+// never, plain partners before mirror-wall partners (and among them soil before extrapolating
+// walls), ghosts on one of their two ranks; a list
 // whose atoms have each moved less than half their own skin still holds every pair within the
 // support.
 
@@ -91,17 +92,22 @@ void check_list(int dimension, bool newton, unsigned seed, double skin_per_h = 0
       const int j = list.partner_data()[jj];
       const int kind_i = KIND_OF_TYPE[p.type[i]], kind_j = KIND_OF_TYPE[p.type[j]];
       EXPECT_TRUE(kind_i == NEIGHBOUR_SOIL || kind_j == NEIGHBOUR_SOIL) << "a wall-wall pair";
+      if (newton) EXPECT_EQ(kind_i, NEIGHBOUR_SOIL) << "a wall particle's list with Newton's third law";
       EXPECT_TRUE(within(p, i, j, dimension, skin, skin_per_h))
           << i << " " << j << " beyond the cutoff";
       const bool mirror = kind_i == NEIGHBOUR_MIRROR_WALL || kind_j == NEIGHBOUR_MIRROR_WALL;
       EXPECT_EQ(mirror, jj >= list.plain_end(i)) << "partners not sorted by kind";
+      const bool extrapolated = kind_i == NEIGHBOUR_EXTRAPOLATED_WALL || kind_j == NEIGHBOUR_EXTRAPOLATED_WALL;
+      if (!mirror)
+        EXPECT_EQ(extrapolated, jj >= list.extrapolated_begin(i)) << "extrapolated walls not after the soil";
       EXPECT_TRUE(listed.insert({std::min(i, j), std::max(i, j)}).second) << "listed twice";
     }
   }
 
   // every owned-owned pair within the cutoff once; a pair with a ghost: with Newton's third
-  // law where the ghost lies above (z, then y, then x), which holds on exactly one of the two
-  // ranks (the other sees the mirrored separation); without, always
+  // law a soil pair where the ghost lies above (z, then y, then x), which holds on exactly one of
+  // the two ranks (the other sees the mirrored separation), and a soil-wall pair where the soil
+  // is owned (under the soil particle: a wall lists no partners); without, always
   const int nall = (int) p.h.size();
   std::size_t expected = 0;
   for (int i = 0; i < p.nlocal; i++)
@@ -110,7 +116,9 @@ void check_list(int dimension, bool newton, unsigned seed, double skin_per_h = 0
       if (kind_i != NEIGHBOUR_SOIL && kind_j != NEIGHBOUR_SOIL) continue;
       if (!within(p, i, j, dimension, skin, skin_per_h)) continue;
       bool keep = true;
-      if (j >= p.nlocal && newton) {
+      if (j >= p.nlocal && newton && kind_i != NEIGHBOUR_SOIL) {
+        keep = false;
+      } else if (j >= p.nlocal && newton && kind_j == NEIGHBOUR_SOIL) {
         const auto &xi = p.coordinates[i], &xj = p.coordinates[j];
         if (xj[2] != xi[2]) keep = xj[2] > xi[2];
         else if (xj[1] != xi[1]) keep = xj[1] > xi[1];
@@ -148,8 +156,10 @@ TEST(NeighbourList, AtomsWithinHalfTheirSkinKeepEveryPairWithinTheSupport)
     list.build(input_of(p, dimension, 0.0, true, skin_per_h));
     std::set<std::pair<int, int>> listed;
     for (int i = 0; i < p.nlocal; i++)
-      for (int jj = list.first(i); jj < list.end(i); jj++)
-        listed.insert({i, list.partner_data()[jj]});
+      for (int jj = list.first(i); jj < list.end(i); jj++) {
+        const int j = list.partner_data()[jj];
+        listed.insert({std::min(i, j), std::max(i, j)});
+      }
 
     const auto original = p.coordinates;
     std::mt19937 random(99);

@@ -4,6 +4,7 @@
 
 #include "gtest/gtest.h"
 
+#include <random>
 #include <vector>
 
 using namespace SPHSoil;
@@ -92,4 +93,32 @@ TEST(RefineBalance, BalancedLevelsStayAsTheyAre)
   const std::vector<int> level{0, 1, 2, 1, 0};
   EXPECT_EQ(check(g, level, {}, {1, 1, 1, 1, 1}), level);
   EXPECT_EQ(count_unbalanced(g.graph, level.data()), 0);
+}
+
+// pairs of one level constrain nothing (the header): on random graphs, levels, wishes and
+// permissions, leaving them out changes no check's outcome and no count
+TEST(RefineBalance, PairsOfOneLevelMayBeLeftOut)
+{
+  std::mt19937 random(29);
+  for (int trial = 0; trial < 200; trial++) {
+    const int n = 30;
+    std::vector<int> level(n);
+    std::vector<char> may_split(n);
+    std::vector<int> wanted;
+    for (int i = 0; i < n; i++) {
+      level[i] = (int) (random() % 4);
+      may_split[i] = random() % 5 != 0;
+      if (random() % 3 == 0) wanted.push_back(i);
+    }
+    std::vector<std::pair<int, int>> all, across;
+    for (int i = 0; i < n; i++)
+      for (int j = i + 1; j < n; j++)
+        if (random() % 6 == 0) {
+          all.push_back({i, j});
+          if (level[i] != level[j]) across.push_back({i, j});
+        }
+    const Graph full(n, all), reduced(n, across);
+    EXPECT_EQ(check(full, level, wanted, may_split), check(reduced, level, wanted, may_split));
+    EXPECT_EQ(count_unbalanced(full.graph, level.data()), count_unbalanced(reduced.graph, level.data()));
+  }
 }

@@ -10,7 +10,7 @@
 namespace SPHSoil {
 
 void SmoothingClassGrids::build(const double *const *x, const double *h_, const std::vector<int> &members,
-                                int dimension, double support)
+                                int dimension, double support, double cell_per_h)
 {
   h = h_;
   dims = dimension == 2 ? 2 : 3;
@@ -32,19 +32,30 @@ void SmoothingClassGrids::build(const double *const *x, const double *h_, const 
     nclasses = std::max(nclasses, c + 1);
   }
   std::vector<Class> all(nclasses);
-  for (auto &c : all) c.reach = 0.0;
+  for (auto &c : all) c.h_max = 0.0;
   for (std::size_t k = 0; k < members.size(); k++) {
     Class &c = all[class_of[k]];
     const int j = members[k];
     c.members.push_back(j);
     c.positions.push_back(x[j]);
-    c.reach = std::max(c.reach, support * h[j]);
+    c.h_max = std::max(c.h_max, h[j]);
   }
   for (auto &c : all) {
     if (c.members.empty()) continue;
-    c.grid.build(c.positions.data(), (int) c.members.size(), dimension, c.reach);
+    c.reach = support * c.h_max;
+    c.grid.build(c.positions.data(), (int) c.members.size(), dimension,
+                 cell_per_h > 0.0 ? cell_per_h * c.h_max : c.reach);
     classes.push_back(std::move(c));
   }
+}
+
+std::size_t SmoothingClassGrids::memory_bytes() const
+{
+  std::size_t bytes = 0;
+  for (const auto &c : classes)
+    bytes += sizeof(int) * c.members.capacity() + sizeof(const double *) * c.positions.capacity() +
+        c.grid.memory_bytes();
+  return bytes;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -101,6 +112,7 @@ void NeighbourList::build(const NeighbourInput &in)
   const bool three = in.dimension == 3;
   dims = three ? 3 : 2;
   offsets.assign(nlocal + 1, 0);
+  extrapolated_begins.assign(nlocal, 0);
   plain_ends.assign(nlocal, 0);
   partners.clear();
   x_at_build.resize((std::size_t) dims * nlocal);
@@ -114,45 +126,62 @@ void NeighbourList::build(const NeighbourInput &in)
 
   // a pair's cutoff is reach_per_h (h_i + h_j) + skin
   const double reach_per_h = 0.5 * (in.support + in.skin_per_h);
-  // cells of half the largest cutoff: a search of two cells each way checks (5/2)^D of the
-  // cutoff's volume against 3^D for cells of the whole cutoff
-  double max_h = 0.0;
-  for (int i = 0; i < nall; i++) max_h = std::max(max_h, in.h[i]);
-  const double max_cutoff = 2.0 * reach_per_h * max_h + in.skin;
-  grid.build(in.x, nall, in.dimension, 0.5 * max_cutoff);
+  // each class of h in cells of half its own pairs' cutoff (without the absolute skin): a search
+  // of two cells each way checks (5/2)^D of the cutoff's volume against 3^D for cells of the
+  // whole cutoff. Soil and walls apart: walls never pair with each other, and the layers of a
+  // wall under the soil outnumber it. With Newton's third law for ghost pairs a soil-wall pair
+  // belongs to the soil particle (on the rank that owns it, whatever the order of the two), and
+  // wall particles do not search at all; without it, each rank keeps the pairs of its owned
+  // particles with ghosts, and wall particles search the soil.
+  soil_atoms.clear();
+  wall_atoms.clear();
+  for (int j = 0; j < nall; j++)
+    (in.kind_of_type[in.type[j]] == NEIGHBOUR_SOIL ? soil_atoms : wall_atoms).push_back(j);
+  soil_classes.build(in.x, in.h, soil_atoms, in.dimension, in.support, reach_per_h);
+  wall_classes.build(in.x, in.h, wall_atoms, in.dimension, in.support, reach_per_h);
 
   // each owned atom's partners: plain ones straight into the list, mirror-wall ones after them
   for (int i = 0; i < nlocal; i++) {
     offsets[i] = (int) partners.size();
+    extrapolated_scratch.clear();
     mirror_scratch.clear();
     const double *xi = in.x[i];
     const double hi_skin = reach_per_h * in.h[i] + in.skin;
     const int kind_i = in.kind_of_type[in.type[i]];
-    grid.for_each_near(xi, hi_skin + reach_per_h * max_h, [&](int j) {
-      if (j < nlocal) {
-        if (j <= i) return;
-      } else if (in.newton) {
-        // a ghost pair is kept on one of its two ranks: where j lies above i
-        const double *xj = in.x[j];
-        if (three && xj[2] != xi[2]) {
-          if (xj[2] < xi[2]) return;
-        } else if (xj[1] != xi[1]) {
-          if (xj[1] < xi[1]) return;
-        } else if (xj[0] < xi[0]) {
-          return;
-        }
-      }
+    const auto reach = [&](double h_class) { return hi_skin + reach_per_h * h_class; };
+    if (kind_i != NEIGHBOUR_SOIL && in.newton) {
+      extrapolated_begins[i] = plain_ends[i] = offsets[i];
+      continue;
+    }
+    // whether pair (i, j) is i's to keep by the half list's order: an owned pair where j > i, a
+    // ghost pair (with Newton's third law) on the one of its two ranks where j lies above i
+    const auto in_order = [&](int j) {
+      if (j < nlocal) return j > i;
+      if (!in.newton) return true;
+      const double *xj = in.x[j];
+      if (three && xj[2] != xi[2]) return xj[2] > xi[2];
+      if (xj[1] != xi[1]) return xj[1] > xi[1];
+      return xj[0] >= xi[0];
+    };
+    const auto visit = [&](int j, bool ordered) {
+      if (ordered && !in_order(j)) return;
       const int kind_j = in.kind_of_type[in.type[j]];
-      if (kind_i != NEIGHBOUR_SOIL && kind_j != NEIGHBOUR_SOIL) return;    // wall-wall
       const double *xj = in.x[j];
       const double dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = three ? xi[2] - xj[2] : 0.0;
       const double cut = hi_skin + reach_per_h * in.h[j];
       if (dx * dx + dy * dy + dz * dz >= cut * cut) return;
       if (kind_i == NEIGHBOUR_MIRROR_WALL || kind_j == NEIGHBOUR_MIRROR_WALL)
         mirror_scratch.push_back(j);
+      else if (kind_j == NEIGHBOUR_EXTRAPOLATED_WALL)
+        extrapolated_scratch.push_back(j);
       else
         partners.push_back(j);
-    });
+    };
+    soil_classes.for_each_near(xi, reach, [&](int j) { visit(j, true); });
+    if (kind_i == NEIGHBOUR_SOIL) wall_classes.for_each_near(xi, reach, [&](int j) { visit(j, !in.newton); });
+    // (an extrapolating wall's partners are all soil: the pairs with it begin at its first)
+    extrapolated_begins[i] = kind_i == NEIGHBOUR_EXTRAPOLATED_WALL ? offsets[i] : (int) partners.size();
+    partners.insert(partners.end(), extrapolated_scratch.begin(), extrapolated_scratch.end());
     plain_ends[i] = (int) partners.size();
     partners.insert(partners.end(), mirror_scratch.begin(), mirror_scratch.end());
   }
@@ -174,9 +203,10 @@ bool NeighbourList::moved_beyond_skin(const double *const *x, int nlocal) const
 
 std::size_t NeighbourList::memory_bytes() const
 {
-  return sizeof(int) * (offsets.capacity() + plain_ends.capacity() + partners.capacity() +
-                        mirror_scratch.capacity()) +
-      sizeof(double) * (x_at_build.capacity() + move_limit2.capacity()) + grid.memory_bytes();
+  return sizeof(int) * (offsets.capacity() + extrapolated_begins.capacity() + plain_ends.capacity() +
+                        partners.capacity() + extrapolated_scratch.capacity() + mirror_scratch.capacity()) +
+      sizeof(double) * (x_at_build.capacity() + move_limit2.capacity()) + sizeof(int) * (soil_atoms.capacity() + wall_atoms.capacity()) +
+      soil_classes.memory_bytes() + wall_classes.memory_bytes();
 }
 
 }    // namespace SPHSoil

@@ -10,9 +10,10 @@
    only on one of the two ranks (the one where j lies above i in z, then y,
    then x, as LAMMPS's own half lists decide). Wall particles never pair with
    each other. A particle's partners come sorted by kind: first those whose
-   pair is a plain SPH pair (soil, or a wall that extrapolates the soil's
+   pair is a plain SPH pair (soil, then walls that extrapolate the soil's
    state), then those whose pair goes through a mirror wall's image, so that
-   the pair loop needs no test of the partner's kind (doc/theory.rst 5.8).
+   the pair loop and the walls' extrapolation need no test of the partner's
+   kind (doc/theory.rst 5.8).
 
    The skin may follow h too: a pair's skin is skin + skin_per_h h_ij, and the
    list stays valid while every atom i has moved less than half of its own
@@ -90,9 +91,10 @@ class CellGrid {
 // largest h of the run would (a refined particle among level-0 soil and walls).
 class SmoothingClassGrids {
  public:
-  // bin the atoms `members` (indices into x and h) of x: `support` h is an atom's reach
+  // bin the atoms `members` (indices into x and h) of x: `support` h is an atom's reach; each
+  // class in cells of `cell_per_h` times its largest h (0: of its reach)
   void build(const double *const *x, const double *h, const std::vector<int> &members,
-             int dimension, double support);
+             int dimension, double support, double cell_per_h = 0.0);
   // call f(j, r2) for every member j with |p - x_j| < max(reach, support h_j) (exactly those:
   // the distance is tested here), r2 = |p - x_j|^2
   template <class F> void for_each_within(const double *p, double reach, F &&f) const
@@ -109,10 +111,19 @@ class SmoothingClassGrids {
       });
     }
   }
+  // call f(j) for every member j in the cells within reach_of(h_max) of p, h_max the largest h
+  // of j's class (a superset of the members within that distance: the caller tests it)
+  template <class Reach, class F> void for_each_near(const double *p, Reach &&reach_of, F &&f) const
+  {
+    for (const auto &c : classes)
+      c.grid.for_each_near(p, reach_of(c.h_max), [&](int k) { f(c.members[k]); });
+  }
+  std::size_t memory_bytes() const;
 
  private:
   struct Class {
-    double reach;                          // support times the largest h of the class
+    double h_max;                          // the largest h of the class
+    double reach;                          // support times h_max
     std::vector<int> members;              // atom indices
     std::vector<const double *> positions;
     CellGrid grid;
@@ -129,8 +140,12 @@ class NeighbourList {
   void build(const NeighbourInput &in);
 
   // owned atom i's partners are partners[first(i) .. end(i)); the plain ones up to
-  // plain_end(i), then the mirror-wall ones
+  // plain_end(i), then the mirror-wall ones. The plain pairs of a soil particle and a wall that
+  // extrapolates are [extrapolated_begin(i) .. plain_end(i)): for a soil particle its partners
+  // of that kind, which come after its soil partners; for such a wall particle all its plain
+  // partners (soil).
   int first(int i) const { return offsets[i]; }
+  int extrapolated_begin(int i) const { return extrapolated_begins[i]; }
   int size() const { return (int) plain_ends.size(); }    // the owned atoms at the build
   int plain_end(int i) const { return plain_ends[i]; }
   int end(int i) const { return offsets[i + 1]; }
@@ -142,12 +157,17 @@ class NeighbourList {
   bool moved_beyond_skin(const double *const *x, int nlocal) const;
 
  private:
-  std::vector<int> offsets, plain_ends, partners;
+  std::vector<int> offsets, extrapolated_begins, plain_ends, partners;
   int dims = 2;
   std::vector<double> x_at_build;    // owned atoms' positions, dims per atom
   std::vector<double> move_limit2;   // (half the atom's skin)^2
-  CellGrid grid;    // kept between builds
-  std::vector<int> mirror_scratch;
+  // the owned and ghost atoms binned by their h, soil and walls apart: a particle searches each
+  // class of h within its pair cutoff with the class's largest h, so that a refined particle's
+  // search costs what its neighbours need, not what the largest h of the run would, and a wall
+  // particle searches the soil alone (doc/theory.rst 5.8)
+  SmoothingClassGrids soil_classes, wall_classes;
+  std::vector<int> soil_atoms, wall_atoms;
+  std::vector<int> extrapolated_scratch, mirror_scratch;
 };
 
 }    // namespace SPHSoil

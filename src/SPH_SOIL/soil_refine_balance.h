@@ -18,7 +18,10 @@
       one above its own (coarse neighbours split first), repeated until nothing
       changes. C guarantees that this mends every pair a split of step 2 would
       unbalance, and it mends pairs that motion has unbalanced where it can.
-   A forced split never comes from a split that step 1 called off. The passes
+   A forced split never comes from a split that step 1 called off. Two
+   neighbours of one level L never constrain each other (a neighbour's C is at
+   least L, so it allows L + 1; N is at most L + 1, so it forces nothing; and
+   they are balanced): a graph may leave such pairs out. The passes
    work on one rank's owned particles; the caller brings the ghosts' values up
    to date between passes and repeats until no rank changes anything.
 ------------------------------------------------------------------------- */

@@ -34,12 +34,23 @@ void SPHSoilRefineBalance::prepare(int groupbit, double support, double scale,
   // level-0 particles can be neither unbalanced nor limit nor force anything, so a level-0
   // particle needs its refined neighbours only, which find it. The cost follows the refined
   // zone, not the whole group.
+  // The splits' balance needs the pairs of different levels only (a pair of one level
+  // constrains nothing, soil_refine_balance.h): the particles are binned by level and each
+  // searches the other levels' bins, so that inside a refined zone a particle visits few. The
+  // merge's search (`only`) keeps every level, in one bin.
   std::vector<int> members;
-  for (int j = 0; j < nall; j++)
-    if (mask[j] & groupbit) members.push_back(j);
+  std::vector<std::vector<int>> by_level(1);
+  for (int j = 0; j < nall; j++) {
+    if (!(mask[j] & groupbit)) continue;
+    members.push_back(j);
+    const int bin = only ? 0 : level[j];
+    if (bin >= (int) by_level.size()) by_level.resize(bin + 1);
+    by_level[bin].push_back(j);
+  }
   const int dimension = domain->dimension;
-  SPHSoil::SmoothingClassGrids near;
-  near.build(atom->x, h, members, dimension, BUFFER * support);
+  std::vector<SPHSoil::SmoothingClassGrids> near(by_level.size());
+  for (size_t bin = 0; bin < by_level.size(); bin++)
+    near[bin].build(atom->x, h, by_level[bin], dimension, BUFFER * support);
   struct Edge {
     int i, j;
     bool within_support;
@@ -49,13 +60,15 @@ void SPHSoilRefineBalance::prepare(int groupbit, double support, double scale,
   double **x = atom->x;
   for (int j : members) {
     if (only ? j >= nlocal || !(*only)[j] : level[j] < 1) continue;
-    near.for_each_within(x[j], BUFFER * support * scale * h[j], [&](int k, double r2) {
+    const auto visit = [&](int k, double r2) {
       if (k == j) return;
       const double reach = support * MAX(h[j], h[k]);
       const bool within = r2 < reach * reach;
       if (j < nlocal) edges.push_back({j, k, within});
       if (!only && k < nlocal && level[k] < 1) edges.push_back({k, j, within});
-    });
+    };
+    for (size_t bin = 0; bin < by_level.size(); bin++)
+      if (only || (int) bin != level[j]) near[bin].for_each_within(x[j], BUFFER * support * scale * h[j], visit);
   }
   previous_edges = edges.size();
   // the owned particles' lists (a counting sort of the edges)

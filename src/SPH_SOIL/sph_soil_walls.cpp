@@ -269,14 +269,10 @@ void SPHSoilWalls::extrapolate(double *packed, const NeighbourList &list)
 
   const int *partners = list.partner_data();
   for (int i = 0; i < nlocal; i++) {
-    const int wall_i = kind[type[i]];
-    for (int jj = list.first(i); jj < list.plain_end(i); jj++) {
+    const bool wall_i = kind[type[i]] == NEIGHBOUR_EXTRAPOLATED_WALL;
+    // the pairs of a soil particle and an extrapolated wall particle (soil_neighbours.h)
+    for (int jj = list.extrapolated_begin(i); jj < list.plain_end(i); jj++) {
       const int j = partners[jj];
-      const int wall_j = kind[type[j]];
-      // a soil particle and an extrapolated wall particle
-      if (!((wall_i == NEIGHBOUR_EXTRAPOLATED_WALL && wall_j == NEIGHBOUR_SOIL) ||
-            (wall_i == NEIGHBOUR_SOIL && wall_j == NEIGHBOUR_EXTRAPOLATED_WALL)))
-        continue;
       const int wall = wall_i ? i : j, soil = wall_i ? j : i;
       if (!newton_pair && wall >= nlocal) continue;
       const double *ps = packed + (size_t) soil * PACKED, *pw = packed + (size_t) wall * PACKED;

@@ -270,6 +270,64 @@ def test_showcase_of_one_run_per_configuration(tmp_path):
         cli.main(['showcase', 'bearing-capacity', '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])
 
 
+def test_showcase_extrapolates_a_uniform_run_finer_than_those_measured(tmp_path):
+    """The shallow-landslide showcase: the runout is the answer; a refined run finer than every
+    uniform run is costed against the finest uniform run's time grown per halving as between the
+    two finest (here 16x), and the figure marks its own target (0.1x)."""
+    work = tmp_path / 'work' / 'shallow-landslide'
+    work.mkdir(parents=True)
+
+    def result(name, d, refined, runout, seconds):
+        (work / f'{name}.json').write_text(json.dumps({
+            'spacing_m': d, 'finest_spacing_m': d / 2 ** refined, 'refined': refined,
+            'stepping': 'level' if refined else None, 'buffer': 0.0 if refined else None, 'ease': None,
+            'split': None, 'runout_m': runout, 'deposit_height_m': 0.3, 'wall_seconds': seconds}))
+    result('u20', 0.2, 0, 10.4, 80.0)
+    result('u10', 0.1, 0, 11.0, 1280.0)
+    result('l2_level', 0.2, 2, 11.1, 2048.0)
+    doc = tmp_path / 'doc'
+    cli.main(['showcase', 'shallow-landslide', '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])
+    summary = json.loads((doc / 'showcases.json').read_text())['shallow-landslide']
+    rows = {r['name']: r for r in summary['configurations']}
+    assert summary['finest_uniform'] == 'u10' and summary['tolerance'] == pytest.approx(0.6)
+    assert summary['uniform_cost_growth_per_halving'] == pytest.approx(16.0) and summary['target'] == 0.1
+    assert rows['l2_level']['cost_over_uniform_at_its_spacing'] is None
+    assert rows['l2_level']['cost_over_uniform_at_its_spacing_extrapolated'] == pytest.approx(0.1)
+    assert rows['l2_level']['within_tolerance'] and rows['l2_level']['deposit_height_m'] == 0.3
+    assert '~0.10 (extrapolated)' in (doc / 'showcases.rst').read_text()
+
+
+def test_landslide_runs_an_example_and_measures_it(tmp_path, monkeypatch):
+    """--run runs a copy of the example (its terrain beside it) with the spacing and the
+    refinement variables, measures the run's final dump and writes the configuration's fields,
+    which the showcase's answer reads."""
+    from sph_soil import runner
+    from sph_soil.studies import landslide
+    seen = {}
+
+    def fake_run(self, infile, directory, np=1, variables=(), **kw):
+        seen.update(infile=infile, np=np, variables=dict(variables))
+        assert os.path.exists(os.path.join(directory, 'terrain.stl'))
+        rows = ['ITEM: TIMESTEP', '0', 'ITEM: ATOMS id type x y z mass c_soil v_height',
+                '1 2 7.0 0.0 0.1 1.85 2 0.1', '2 1 1.0 0.0 1.0 14.8 0 0.5']
+        with open(os.path.join(directory, 'dump.shallow_landslide.final'), 'w') as f:
+            f.write('\n'.join(rows) + '\n')
+        return runner.Result([], directory, 0, 12.5, None)
+    monkeypatch.setattr(runner.Lammps, 'run', fake_run)
+    monkeypatch.setattr(runner.Lammps, 'require', lambda self: self)
+    out = tmp_path / 'l2.json'
+    cli.main(['landslide', '--run', '--d', '0.2', '--refine', '2', '--stepping', 'level', '--balance',
+              '--workdir', str(tmp_path / 'runs'), '--json', str(out), '--np', '2'])
+    summary = json.loads(out.read_text())
+    assert seen['np'] == 2 and seen['infile'].endswith('in.shallow_landslide')
+    assert seen['variables']['d'] == '0.2' and seen['variables']['refine'] == '2'
+    assert seen['variables']['stepping'] == 'level' and seen['variables']['balance'] == '1'
+    assert summary['runout_m'] == pytest.approx(7.0) and summary['wall_seconds'] == 12.5
+    assert summary['finest_spacing_m'] == pytest.approx(0.05) and summary['refined'] == 2
+    answer = landslide.showcase_answer(summary)
+    assert answer['critical'] == pytest.approx(7.0) and answer['wall_seconds_all_runs'] == 12.5
+
+
 def test_showcase_runs_the_missing_configurations(tmp_path, monkeypatch):
     """--run hands each configuration without a JSON to its study, with the showcase's bracket;
     a configuration whose study stops (no bracket) does not stop the others."""

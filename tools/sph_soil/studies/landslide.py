@@ -13,17 +13,23 @@ measured apart (how much of it moved onto the floor):
   - standing_volume_on_floor_m3 (shallow_landslide): the mantle's volume beyond the toe.
 
 Writes JSON and a plot: the deposit's thickness seen from above, and the front against time
-(landslide.dat).
+(landslide.dat). With --run it first runs an example (a copy of its input, in --workdir) at
+spacing --d with the refinement options of the failure studies (refine_options), and measures
+that run; the JSON then also holds the configuration (spacing, refinement), its wall time and
+the fields that a showcase reads (showcase_answer: the runout as the answer).
 
   python3 -m sph_soil landslide [--dir examples/landslide_3d] [--json FILE] [--plot FILE]
   python3 -m sph_soil landslide --dir examples/shallow_landslide
+  python3 -m sph_soil landslide --run --example shallow_landslide --d 0.1 [--refine 2 --stepping level
+                                --balance] [--np 2] [--workdir DIR] [--json FILE] [--plot FILE]
 """
 import os
 import re
+import shutil
 
 import numpy as np
 
-from .. import logs, paths, report
+from .. import logs, paths, refine_options, report, runner
 from ..dumps import read_ave_time, read_dump
 
 COMMAND = 'landslide'
@@ -129,10 +135,54 @@ def report_example(directory, log, variables, seconds):
               seconds, float(variables['d']))
 
 
+def run(lmp, args):
+    """Run the example at spacing args.d with the refinement options in a directory of its own
+    (a copy of the input: an edit of the example cannot change a run under way); its deposit
+    with the configuration's fields."""
+    source = os.path.join(paths.example_dir(args.example), f'in.{args.example}')
+    directory = os.path.join(args.workdir, f'{args.example}_d{args.d:g}{refine_options.tag(args)}')
+    os.makedirs(directory, exist_ok=True)
+    for old in os.listdir(directory):
+        if old.startswith('frame.') or old.startswith('dump.'):
+            os.remove(os.path.join(directory, old))
+    shutil.copy(source, os.path.join(directory, f'in.{args.example}'))
+    for name in ('terrain.lmp', 'terrain.stl'):
+        shutil.copy(os.path.join(os.path.dirname(source), name), directory)
+    done = lmp.run(os.path.join(directory, f'in.{args.example}'), directory, np=args.np,
+                   variables=[('d', f'{args.d:g}')] + refine_options.variables(args))
+    if not done.ok:
+        raise SystemExit(f'landslide: {" ".join(done.command)} failed with exit code {done.returncode}')
+    summary = landslide(directory, None, args.plot, round(done.seconds, 1), args.d)
+    summary.update(refine_options.summary(args, args.d), ranks=args.np,
+                   refinement=refine_options.title(args).lstrip(', '))
+    report.write_json(summary, args.json, indent=2)
+    return summary
+
+
+def showcase_answer(summary):
+    """A showcase configuration's answer (studies/showcase.py) from this study's JSON of one run:
+    the runout (m), with the deposit's thickness beside it, and the run's wall time."""
+    return {**{k: summary.get(k) for k in ('spacing_m', 'finest_spacing_m', 'refined', 'stepping', 'buffer',
+                                          'ease', 'split', 'deposit_height_m', 'deposit_volume_fraction_on_floor',
+                                          'standing_volume_on_floor_m3')},
+            'critical': summary['runout_m'], 'half_width': 0.0, 'stands_up_to': None, 'fails_from': None,
+            'wall_seconds_all_runs': summary['wall_seconds']}
+
+
 def add_arguments(p):
     report.add_run_arguments(p, paths.example_dir('landslide_3d'),
                              'a final dump, landslide.dat, terrain.lmp')
+    p.add_argument('--run', action='store_true', help='run --example first (in --workdir) and measure that run')
+    p.add_argument('--example', choices=sorted(EXAMPLES), default='shallow_landslide',
+                   help='with --run: the example (default: %(default)s)')
+    p.add_argument('--d', type=float, default=0.2, help='with --run: the soil\'s spacing (m; default: %(default)s)')
+    p.add_argument('--workdir', default='/tmp/sph_soil_landslide', help='with --run: where the run goes')
+    runner.add_arguments(p)
+    refine_options.add_arguments(p, every=16)
 
 
 def main(a):
-    landslide(a.dir, a.json, a.plot)
+    if a.run:
+        run(runner.from_arguments(a), a)
+    else:
+        landslide(a.dir, a.json, a.plot)
