@@ -239,6 +239,14 @@ def test_showcase_compares_with_the_finest_uniform_run(tmp_path):
         cli.main(['showcase', 'footing', '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])
 
 
+def report_showcase(tmp_path, showcase):
+    """`sph_soil showcase SHOWCASE` on tmp_path/work: its doc directory, its summary and rows by name."""
+    doc = tmp_path / 'doc'
+    cli.main(['showcase', showcase, '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])
+    summary = json.loads((doc / 'showcases.json').read_text())[showcase]
+    return doc, summary, {r['name']: r for r in summary['configurations']}
+
+
 def test_showcase_of_one_run_per_configuration(tmp_path):
     """The bearing-capacity showcase reads each configuration's one push (the study's JSON of
     runs): its limit pressure is the answer, without a bracket; a JSON of another shape is an error."""
@@ -255,10 +263,7 @@ def test_showcase_of_one_run_per_configuration(tmp_path):
     result('u40', 40, 0, 1.065, 500.0)
     result('l2_level', 10, 2, 1.066, 70.0)
     result('l1_level', 10, 1, 1.07, 15.0)
-    doc = tmp_path / 'doc'
-    cli.main(['showcase', 'bearing-capacity', '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])
-    summary = json.loads((doc / 'showcases.json').read_text())['bearing-capacity']
-    rows = {r['name']: r for r in summary['configurations']}
+    doc, summary, rows = report_showcase(tmp_path, 'bearing-capacity')
     assert summary['finest_uniform'] == 'u40' and summary['tolerance'] == pytest.approx(0.02)
     assert rows['l2_level']['within_tolerance'] and rows['l2_level']['cost_over_finest_uniform'] == 0.14
     assert rows['l1_level']['difference_from_uniform_at_its_spacing'] == pytest.approx(-0.015)
@@ -285,10 +290,7 @@ def test_showcase_extrapolates_a_uniform_run_finer_than_those_measured(tmp_path)
     result('u20', 0.2, 0, 10.4, 80.0)
     result('u10', 0.1, 0, 11.0, 1280.0)
     result('l2_level', 0.2, 2, 11.1, 2048.0)
-    doc = tmp_path / 'doc'
-    cli.main(['showcase', 'shallow-landslide', '--workdir', str(tmp_path / 'work'), '--doc', str(doc)])
-    summary = json.loads((doc / 'showcases.json').read_text())['shallow-landslide']
-    rows = {r['name']: r for r in summary['configurations']}
+    doc, summary, rows = report_showcase(tmp_path, 'shallow-landslide')
     assert summary['finest_uniform'] == 'u10' and summary['tolerance'] == pytest.approx(0.6)
     assert summary['uniform_cost_growth_per_halving'] == pytest.approx(16.0) and summary['target'] == 0.1
     assert rows['l2_level']['cost_over_uniform_at_its_spacing'] is None
