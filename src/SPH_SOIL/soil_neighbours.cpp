@@ -145,14 +145,14 @@ void NeighbourList::build(const NeighbourInput &in)
     offsets[i] = (int) partners.size();
     extrapolated_scratch.clear();
     mirror_scratch.clear();
-    const double *xi = in.x[i];
-    const double hi_skin = reach_per_h * in.h[i] + in.skin;
     const int kind_i = in.kind_of_type[in.type[i]];
-    const auto reach = [&](double h_class) { return hi_skin + reach_per_h * h_class; };
     if (kind_i != NEIGHBOUR_SOIL && in.newton) {
       extrapolated_begins[i] = plain_ends[i] = offsets[i];
       continue;
     }
+    const double *xi = in.x[i];
+    const double hi_skin = reach_per_h * in.h[i] + in.skin;
+    const auto reach = [&](double h_class) { return hi_skin + reach_per_h * h_class; };
     // whether pair (i, j) is i's to keep by the half list's order: an owned pair where j > i, a
     // ghost pair (with Newton's third law) on the one of its two ranks where j lies above i
     const auto in_order = [&](int j) {

@@ -9,7 +9,8 @@
    once, on the rank that owns i, and for a ghost j with Newton's third law on
    only on one of the two ranks (the one where j lies above i in z, then y,
    then x, as LAMMPS's own half lists decide). Wall particles never pair with
-   each other. A particle's partners come sorted by kind: first those whose
+   each other, and with Newton's third law a soil-wall pair is listed at the
+   soil particle, on the rank that owns it (wall particles list nothing). A particle's partners come sorted by kind: first those whose
    pair is a plain SPH pair (soil, then walls that extrapolate the soil's
    state), then those whose pair goes through a mirror wall's image, so that
    the pair loop and the walls' extrapolation need no test of the partner's

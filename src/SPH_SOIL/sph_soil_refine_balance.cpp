@@ -38,11 +38,9 @@ void SPHSoilRefineBalance::prepare(int groupbit, double support, double scale,
   // constrains nothing, soil_refine_balance.h): the particles are binned by level and each
   // searches the other levels' bins, so that inside a refined zone a particle visits few. The
   // merge's search (`only`) keeps every level, in one bin.
-  std::vector<int> members;
   std::vector<std::vector<int>> by_level(1);
   for (int j = 0; j < nall; j++) {
     if (!(mask[j] & groupbit)) continue;
-    members.push_back(j);
     const int bin = only ? 0 : level[j];
     if (bin >= (int) by_level.size()) by_level.resize(bin + 1);
     by_level[bin].push_back(j);
@@ -58,17 +56,19 @@ void SPHSoilRefineBalance::prepare(int groupbit, double support, double scale,
   std::vector<Edge> edges;
   edges.reserve(previous_edges + previous_edges / 8);
   double **x = atom->x;
-  for (int j : members) {
-    if (only ? j >= nlocal || !(*only)[j] : level[j] < 1) continue;
-    const auto visit = [&](int k, double r2) {
-      if (k == j) return;
-      const double reach = support * MAX(h[j], h[k]);
-      const bool within = r2 < reach * reach;
-      if (j < nlocal) edges.push_back({j, k, within});
-      if (!only && k < nlocal && level[k] < 1) edges.push_back({k, j, within});
-    };
-    for (size_t bin = 0; bin < by_level.size(); bin++)
-      if (only || (int) bin != level[j]) near[bin].for_each_within(x[j], BUFFER * support * scale * h[j], visit);
+  for (const auto &members : by_level) {
+    for (int j : members) {
+      if (only ? j >= nlocal || !(*only)[j] : level[j] < 1) continue;
+      const auto visit = [&](int k, double r2) {
+        if (k == j) return;
+        const double reach = support * MAX(h[j], h[k]);
+        const bool within = r2 < reach * reach;
+        if (j < nlocal) edges.push_back({j, k, within});
+        if (!only && k < nlocal && level[k] < 1) edges.push_back({k, j, within});
+      };
+      for (size_t bin = 0; bin < by_level.size(); bin++)
+        if (only || (int) bin != level[j]) near[bin].for_each_within(x[j], BUFFER * support * scale * h[j], visit);
+    }
   }
   previous_edges = edges.size();
   // the owned particles' lists (a counting sort of the edges)

@@ -37,6 +37,8 @@ class SPHSoilRefineBalance : protected Pointers {
   // the owned particles to split: `wanted` and those the balance adds, less those it calls off;
   // may_split[i]: owned particle i may split at this check. Collective.
   std::vector<int> parents(const std::vector<int> &wanted, const std::vector<char> &may_split);
+  // Owned particle i's neighbours: after the splits' prepare() (no `only`) those of other
+  // levels only; after the merge's, those of every level.
   // the finest level among owned particle i's neighbours (its own level if it has none)
   int finest_neighbour(int i) const
   {
