@@ -90,7 +90,7 @@ std::vector<BadInput> cases()
         "Could not find sph_soil/set group ID nosuchgroup");
   error("SetUnknownKeyword", "patch", {}, "sph_soil/set all colour 3",
         "Illegal sph_soil/set command: unknown keyword colour (allowed: mass, h, density, level, "
-        "stress, strain, geostatic, wall, nowall)");
+        "stress, strain, geostatic, pore_pressure, wall, nowall)");
   error("SetMissingValue", "patch", {}, "sph_soil/set all h 0.01 density",
         "Illegal sph_soil/set command: keyword density needs 1 value(s)");
   error("SetMassZero", "patch", {}, "sph_soil/set all mass 0",
@@ -165,7 +165,8 @@ std::vector<BadInput> cases()
   error("CoeffTooFewArguments", "patch", {}, "pair_coeff 1 1",
         "Incorrect args for pair_coeff sph/soil: expected 'I I soil rho0 model parameters' (models: "
         "drucker_prager K nu phi psi c [fit exact|associated|nonassociated] [tension T]; "
-        "mohr_coulomb K nu phi psi c [tension T]), 'I I wall' or '* * file name1 ... name2'");
+        "mohr_coulomb K nu phi psi c [tension T]), 'I I wall', 'I I water rho_w K_w' or '* * file "
+        "name1 ... name2'");
   error("CoeffSoilParameterCount", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0",
         "Incorrect args for pair_coeff sph/soil: material of type(s) 1: drucker_prager needs 5 "
         "parameters (K nu phi psi c), got 4");
@@ -209,7 +210,7 @@ std::vector<BadInput> cases()
         "material of type(s) 1: drucker_prager parameter K: '1e400' is not a finite number");
   error("CoeffWallUnknownOption", "patch", {}, "pair_coeff 2 2 wall 3",
         "material of type(s) 2: unknown wall option '3' (allowed: noslip, freeslip, friction <mu>, "
-        "delta <degrees>, adhesion <c_a>, boundary mirror|extrapolate)");
+        "delta <degrees>, adhesion <c_a>, boundary mirror|extrapolate, drained)");
   error("CoeffWallFriction", "patch", {}, "pair_coeff 2 2 wall friction -1",
         "material of type(s) 2: wall friction coefficient mu = -1 must be finite and >= 0");
   error("CoeffWallFrictionNaN", "patch", {}, "pair_coeff 2 2 wall friction nan",
@@ -218,9 +219,52 @@ std::vector<BadInput> cases()
         "material of type(s) 2: wall delta friction angle (degrees) = -3 must be finite and in [0, 90)");
   error("CoeffWallAdhesion", "patch", {}, "pair_coeff 2 2 wall delta 20 adhesion inf",
         "material of type(s) 2: wall adhesion value c_a (stress units) = inf must be finite and >= 0");
+  // ---- saturated soil, free water, drained walls
+  const std::string saturated = "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0 ";
+  error("CoeffPorosityAlone", "patch", {}, saturated + "porosity 0.4",
+        "material of type(s) 1: a saturated soil needs both porosity and permeability (missing: "
+        "permeability)");
+  error("CoeffPorosityOutOfRange", "patch", {}, saturated + "porosity 1.2 permeability 1e-4",
+        "material of type(s) 1: pore water porosity = 1.2 must be finite and in (0, 1)");
+  error("CoeffPermeabilityNegative", "patch", {}, saturated + "porosity 0.4 permeability -1",
+        "material of type(s) 1: pore water permeability = -1 must be finite and >= 0 (hydraulic "
+        "conductivity, m/s)");
+  error("CoeffWaterDensity", "patch", {}, saturated + "porosity 0.4 permeability 1e-4 water_density -1",
+        "material of type(s) 1: pore water water_density = -1 must be finite and > 0 (kg/m^3)");
+  error("CoeffWaterModulus", "patch", {}, saturated + "porosity 0.4 permeability 1e-4 water_modulus 0",
+        "material of type(s) 1: pore water water_modulus = 0 must be finite and > 0 (Pa)");
+  error("CoeffSaturatedTooLight", "patch", {},
+        "pair_coeff 1 1 soil 300 0.7e6 0.3 19.8 0 0 porosity 0.4 permeability 1e-4",
+        "material of type(s) 1: the saturated density rho0 = 300 must exceed porosity * "
+        "water_density = 400 (rho0 of a saturated soil is the mass of grains and water per volume)");
+  error("CoeffWaterModulusMissing", "patch", {}, "pair_coeff 2 2 water 1000",
+        "material of type(s) 2: water needs its bulk modulus K_w (Pa) after its density, got 0 value(s)");
+  error("CoeffWaterModulusNegative", "patch", {}, "pair_coeff 2 2 water 1000 -2e7",
+        "material of type(s) 2: water bulk modulus K_w = -2e7 must be finite and > 0 (Pa)");
+  error("CoeffWaterDensityNegative", "patch", {}, "pair_coeff 2 2 water -1000 2e7",
+        "material of type(s) 2: water needs its density rho_w, finite and > 0, got -1000");
+  error("CoeffWallDrainedTwice", "patch", {}, "pair_coeff 2 2 wall drained drained",
+        "material of type(s) 2: wall drained given twice");
+  error("DrySoilWithPorePressure", "walls", {"sph_soil/set soil pore_pressure 100"}, "run 0 post no",
+        "Pair sph/soil: 80 particle(s) of dry soil carry a pore pressure (atom 21 of type 1: 100); "
+        "only a saturated soil (a material with porosity and permeability) or a drained wall has "
+        "one: set it to 0 with 'sph_soil/set <group> pore_pressure 0'");
+  out_of_range("SetPorePressureInfinite", "patch", {}, "sph_soil/set all pore_pressure 1e400",
+        "Illegal sph_soil/set pore_pressure 1e400: must be a finite number", "1e400");
+  error("SetGeostaticWaterShort", "patch", {}, "sph_soil/set all geostatic 0.3 2000 10 0.5 water 0.3",
+        "Illegal sph_soil/set geostatic water: needs the water table's level and the water's "
+        "density ('water level rho_w')");
+  error("SetGeostaticWaterDensity", "patch", {}, "sph_soil/set all geostatic 0.3 2000 10 0.5 water 0.3 0",
+        "Illegal sph_soil/set geostatic water density 0: must be > 0");
+  error("FixTimestepAboveDiffusionLimit", "walls",
+        {saturated + "porosity 0.4 permeability 1e-1 water_modulus 2e7", "timestep 1e-6"},
+        "run 0 post no",
+        "Fix sph/soil: timestep 1e-06 exceeds the stability limit 2.82432e-08 = 0.1 * min(h)^2 / D, "
+        "D = 509.858 the pore pressure's largest diffusivity k K_w / (gamma_w n); use a smaller "
+        "timestep or 'cfl 0.1'");
   error("CoeffUnknownKind", "patch", {}, "pair_coeff 1 1 clay 2650 0.7e6 0.3 19.8 0 0",
         "Incorrect args for pair_coeff sph/soil: unknown material kind 'clay' for types 1 1 "
-        "(allowed: soil, wall; a material file takes '* * file name1 ... name2')");
+        "(allowed: soil, wall, water; a material file takes '* * file name1 ... name2')");
   error("CoeffMixedTypes", "patch", {}, "pair_coeff 1 2 soil 2650 0.7e6 0.3 19.8 0 0",
         "a material belongs to atom types, so both type arguments must be the same (got 1 2)");
   error("CoeffTypeOutOfRange", "patch", {}, "pair_coeff 3 3 wall", "Numeric index 3 is out of bounds (1-2)");
@@ -239,7 +283,7 @@ std::vector<BadInput> cases()
         "Invalid material file empty.soil for pair_coeff sph/soil: no material defined");
   error("FileUnknownKind", "patch", {}, "pair_coeff * * kind.soil sand sand",
         "Invalid material file kind.soil for pair_coeff sph/soil: line 1: material sand: unknown kind "
-        "'clay' (allowed: soil, wall)");
+        "'clay' (allowed: soil, wall, water)");
   error("FileNotANumber", "patch", {}, "pair_coeff * * word.soil sand sand",
         "Invalid material file word.soil for pair_coeff sph/soil: line 1: material sand: drucker_prager parameter phi: "
         "'forty-five' "
@@ -443,8 +487,9 @@ std::vector<BadInput> cases()
   error("ComputeWithoutAtomStyle", "none", {"region box block 0 1 0 1 0 1", "create_box 1 box"},
         "compute c all sph/soil/atom", "Compute sph/soil/atom requires atom_style sph/soil");
   error("ComputeUnknownValue", "patch", {}, "compute c all sph/soil/atom stress",
-        "Illegal compute sph/soil/atom value stress (allowed: sxx syy szz sxy sxz syz pressure sqrtJ2 "
-        "strain yielded density h level neighbours shear_strain shear_strain_rate step_period)");
+        "Illegal compute sph/soil/atom value stress (allowed: sxx syy szz sxy sxz syz pressure "
+        "pore_pressure total_sxx total_syy total_szz sqrtJ2 strain yielded density h level neighbours "
+        "shear_strain shear_strain_rate step_period)");
 
   // ---- data files (the rank that reads the atom raises the error)
   data("DataMassNegative", "1 1 -1.0 0.1 1000 0 0.5 0.5 0", "",

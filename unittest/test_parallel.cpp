@@ -23,13 +23,16 @@ using namespace SPHSoilTesting;
 
 namespace {
 
-// per atom: unwrapped position (3), velocity (3), density, stress (6), total strain (6), mass, h
-constexpr int NFIELDS = 21;
+// per atom: unwrapped position (3), velocity (3), density, stress (6), total strain (6), mass, h,
+// pore pressure
+constexpr int NFIELDS = 22;
 const char *const FIELD_NAMES[NFIELDS] = {"xu",  "yu",  "zu",  "vx",  "vy",  "vz",  "rho",
                                           "sxx", "syy", "szz", "sxy", "sxz", "syz", "exx",
-                                          "eyy", "ezz", "exy", "exz", "eyz", "mass", "h"};
+                                          "eyy", "ezz", "exy", "exz", "eyz", "mass", "h",
+                                          "pore_pressure"};
 // fields compared together against one scale (the largest magnitude in the group)
-const std::vector<std::pair<int, int>> GROUPS = {{0, 3}, {3, 6}, {6, 7}, {7, 13}, {13, 19}, {19, 20}, {20, 21}};
+const std::vector<std::pair<int, int>> GROUPS = {{0, 3},   {3, 6},   {6, 7},   {7, 13},
+                                                 {13, 19}, {19, 20}, {20, 21}, {21, 22}};
 
 std::vector<double> state_of(LAMMPS *lmp, int i)
 {
@@ -44,6 +47,7 @@ std::vector<double> state_of(LAMMPS *lmp, int i)
   for (int k = 0; k < 6; k++) s.push_back(avec->total_strain[i][k]);
   s.push_back(atom->rmass[i]);
   s.push_back(avec->smoothing_length[i]);
+  s.push_back(avec->pore_pressure[i]);
   return s;
 }
 
@@ -136,6 +140,7 @@ class Parallel : public SoilTest {
           }
         }
       }
+      // (a field that is 0 everywhere, a dry run's pore pressure, must stay so)
       EXPECT_LE(worst, 1e-10 * scale) << where << " differs by " << worst << " (scale " << scale << ")";
     }
   }
@@ -270,4 +275,26 @@ TEST_F(Parallel, FrictionalSlidingWithMigrationAndBalancing)
                            "neigh_modify every 1 delay 0 check yes",
                            "fix balance all balance 100 1.0 shift x 10 1.0", "timestep 1e-5",
                            "thermo 0", "run 3000 post no"});
+}
+
+// Saturated soil under free water (the pore pressure and its flow, the water's pressure, the
+// multiphase form) drifting across the ranks under dynamic balancing: the same stress and pore
+// pressure on 1, 2 and 4 ranks. (A data file does not hold the pore pressure: each run sets it.)
+TEST_F(Parallel, SoilAndWaterWithMigrationAndBalancing)
+{
+  HIDE_OUTPUT([&] {
+    for (const auto &line : soil_and_water_patch_commands()) command(line);
+    command("variable vx atom 2.0+0.02*sin(2*PI*y/0.16)");
+    command("velocity all set v_vx 1.0 NULL units box");
+    command("write_data saturated.data");
+  });
+  expect_same_on_one_rank(
+      {"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
+       "read_data saturated.data", "group soil type 1",
+       "variable pore atom 300.0+100.0*sin(400*x)*cos(300*y)", "sph_soil/set soil pore_pressure v_pore",
+       "pair_style sph/soil",
+       "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 porosity 0.4 permeability 1e-4 "
+       "water_modulus 2e7",
+       "pair_coeff 2 2 water 1000 2e6", "fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin",
+       "fix balance all balance 100 1.0 shift xy 10 1.0", "thermo 0", "run 1500 post no"});
 }

@@ -168,8 +168,22 @@ TEST_F(Restart, AnotherFixIDAndAFileWrittenDuringARunContinueExactly)
   expect_same_state(gather_state(lmp), uninterrupted);
 }
 
+// Saturated soil under free water: the pore pressure, its flow of the last step and the
+// materials with their pore water travel in the file; the run continues exactly
+TEST_F(Restart, SaturatedSoilAndWaterContinueExactly)
+{
+  commands(soil_and_water_patch_commands());
+  commands({"variable vx atom 0.02*sin(2*PI*y/0.16)", "velocity all set v_vx NULL NULL units box",
+            "neighbor 0.002 bin", "thermo 0", "fix integrate all sph/soil cfl 0.1",
+            "run 50 post no", "write_restart saturated.restart", "run 100 post no"});
+  const auto uninterrupted = gather_state(lmp);
+  commands({"clear", "read_restart saturated.restart", "neighbor 0.002 bin", "thermo 0",
+            "fix integrate all sph/soil cfl 0.1", "run 100 post no"});
+  expect_same_state(gather_state(lmp), uninterrupted);
+}
+
 // A restart file of another layout stops read_restart with both format numbers. The files are
-// made from a current one: the atom style's arguments "format 2" (LAMMPS stores them after the
+// made from a current one: the atom style's arguments "format 3" (LAMMPS stores them after the
 // style's name) changed to "format 7", or removed (a file from before formats had numbers).
 TEST_F(Restart, AFileOfAnotherFormatStopsWithBothFormats)
 {
@@ -181,12 +195,12 @@ TEST_F(Restart, AFileOfAnotherFormatStopsWithBothFormats)
     std::ostringstream buffer;
     buffer << in.rdbuf();
     bytes = buffer.str();
-    // int 2 (arguments), int 7, "format\0", int 2, "2\0"
+    // int 2 (arguments), int 7, "format\0", int 2, "3\0"
     const std::string format("format\0", 7);
     const size_t at = bytes.find(format);
     ASSERT_NE(at, std::string::npos);
     const size_t start = at - 2 * sizeof(int), value = at + 7 + sizeof(int);
-    ASSERT_EQ(bytes.substr(value, 2), std::string("2\0", 2));
+    ASSERT_EQ(bytes.substr(value, 2), std::string("3\0", 2));
     std::string other = bytes;
     other[value] = '7';
     std::ofstream("other.restart", std::ios::binary) << other;
@@ -198,13 +212,13 @@ TEST_F(Restart, AFileOfAnotherFormatStopsWithBothFormats)
   MPI_Barrier(MPI_COMM_WORLD);
   commands({"clear"});
   EXPECT_LAMMPS_ERROR(".*Restart file holds atom_style sph/soil data of format 7; this build of "
-                      "SPH_SOIL reads format 2: read it with the build that wrote it and save the "
+                      "SPH_SOIL reads format 3: read it with the build that wrote it and save the "
                       "state with write_data.*",
                       command("read_restart other.restart"));
   commands({"clear"});
   EXPECT_LAMMPS_ERROR(".*Restart file holds atom_style sph/soil data without a format number, "
                       "written before 2026-12-03 \\(format 1\\); this build of SPH_SOIL reads "
-                      "format 2.*",
+                      "format 3.*",
                       command("read_restart old.restart"));
 }
 

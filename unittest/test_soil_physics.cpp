@@ -128,6 +128,40 @@ TEST_F(SoilPhysics, PeriodicPatchConservesMassAndMomentum)
 
 // the same physics on 1, 2 and 4 ranks: test_parallel.cpp
 
+// Saturated soil under free water (doc/theory.rst 7): the pairs of soil and water, with the total
+// stress, the multiphase form of the momentum sum and the pore water's flow, conserve mass and
+// momentum to round-off; the pore pressure changes (the water flows), and free water's pressure
+// is that of its density
+TEST_F(SoilPhysics, SoilAndWaterConserveMassAndMomentum)
+{
+  HIDE_OUTPUT([&] {
+    for (const auto &line : soil_and_water_patch_commands()) command(line);
+    command("variable vx atom 0.02*sin(2*PI*y/0.16)");
+    command("velocity all set v_vx NULL NULL units box");
+    command("fix integrate all sph/soil cfl 0.1");
+    command("neighbor 0.002 bin");
+    command("thermo 0");
+  });
+  auto avec = soil_avec(lmp);
+  auto atom = lmp->atom;
+  // the soil's pore pressures, summed over all ranks
+  auto soil_pore_pressure = [&]() {
+    double local = 0.0, total = 0.0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->type[i] == 1) local += avec->pore_pressure[i];
+    MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return total;
+  };
+  auto before = totals();
+  const double pore_before = soil_pore_pressure();
+  HIDE_OUTPUT([&] { command("run 1000 post no"); });
+  expect_mass_and_momentum_conserved(before, totals());
+  EXPECT_GT(std::fabs(soil_pore_pressure() - pore_before), 1.0);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->type[i] == 2)
+      ASSERT_DOUBLE_EQ(avec->pore_pressure[i], 2e6 * (atom->rho[i] / 1000.0 - 1.0));
+}
+
 // pair_style sph/soil kernel wendland2: a run with the Wendland C2 kernel conserves mass and
 // momentum, and is not the cubic spline's run
 TEST_F(SoilPhysics, WendlandKernelRunConservesMomentum)

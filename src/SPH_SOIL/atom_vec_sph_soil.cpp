@@ -31,9 +31,12 @@ const char *const SPIN_NAME = "sph_soil_spin";
 const char *const LEVEL_NAME = "sph_soil_level";
 const char *const WALL_DISTANCE_NAME = "sph_soil_wall_distance";
 const char *const SAVED_RATES_NAME = "sph_soil_saved_rates";
+const char *const PORE_PRESSURE_NAME = "sph_soil_pore_pressure";
+const char *const PORE_FLOW_NAME = "sph_soil_pore_flow";
 
 // What compute property/atom can read: name, array, column (-1 for a vector).
-enum Field { H, RHO, DRHO, STRESS, STRESS_RATE, STRAIN, STRAIN_RATE, SPIN, LEVEL, WALL_N, WALL_D, VEST };
+enum Field { H, RHO, DRHO, STRESS, STRESS_RATE, STRAIN, STRAIN_RATE, SPIN, LEVEL, WALL_N, WALL_D, VEST,
+             PORE_PRESSURE, PORE_FLOW };
 struct Property {
   const char *name;
   Field field;
@@ -54,6 +57,7 @@ const Property properties[] = {
     {"wall_nx", WALL_N, 0}, {"wall_ny", WALL_N, 1},  {"wall_nz", WALL_N, 2},
     {"wall_d", WALL_D, -1},
     {"vestx", VEST, 0},    {"vesty", VEST, 1},       {"vestz", VEST, 2},
+    {"pore_pressure", PORE_PRESSURE, -1}, {"pore_flow", PORE_FLOW, -1},
 };
 constexpr int NPROPERTIES = sizeof(properties) / sizeof(properties[0]);
 
@@ -84,7 +88,7 @@ constexpr int AtomVecSPHSoil::RESTART_FORMAT;
 AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
     AtomVec(lmp), smoothing_length(nullptr), stress(nullptr), stress_rate(nullptr),
     total_strain(nullptr), strain_rate(nullptr), spin(nullptr), level(nullptr),
-    wall_normal(nullptr), wall_distance(nullptr), saved_rates(nullptr), rmass(nullptr), rho(nullptr), drho(nullptr),
+    wall_normal(nullptr), wall_distance(nullptr), saved_rates(nullptr), pore_pressure(nullptr), pore_flow(nullptr), rmass(nullptr), rho(nullptr), drho(nullptr),
     vest(nullptr), arrays(arrays_of(atom))
 {
   molecular = Atom::ATOMIC;
@@ -111,28 +115,34 @@ AtomVecSPHSoil::AtomVecSPHSoil(LAMMPS *lmp) :
   set_peratom(atom, LEVEL_NAME, &arrays->level, Atom::INT, 0);
   set_peratom(atom, WALL_DISTANCE_NAME, &arrays->wall_distance, Atom::DOUBLE, 0);
   set_peratom(atom, SAVED_RATES_NAME, &arrays->saved_rates, Atom::DOUBLE, NSAVED);
+  set_peratom(atom, PORE_PRESSURE_NAME, &arrays->pore_pressure, Atom::DOUBLE, 0);
+  set_peratom(atom, PORE_FLOW_NAME, &arrays->pore_flow, Atom::DOUBLE, 0);
 
   // Which fields travel where (why):
   //  comm (every step):  rho, stress, vest   - the pair sum needs them from ghosts (and the
   //                      wall normal mu when a fix may turn walls: the pair style sends it)
   //  reverse (every step): drho, strain rate, spin - ghosts' shares of the pair sums
-  //  border:             + mass, h, wall data - constant between reneighborings
+  //                      (the pore pressure and its flow: the pair style communicates them
+  //                      itself, in runs with saturated soil only)
+  //  border:             + mass, h, wall data - constant between reneighborings; the pore
+  //                      pressure
   //  exchange:           the whole state and the stress rate: atoms migrate between the
   //                      predictor and the force evaluation, which recomputes the other
   //                      rates, while the corrector still needs the stress rate of the
   //                      step's start (fix sph/soil carries its own saved rates)
   //  restart:            the whole state with the rates saved at the end of the last run
   //  data file:          the whole state, see doc/atom_style_sph_soil.rst
-  const std::vector<std::string> rates = {"drho", STRESS_RATE_NAME, STRAIN_RATE_NAME, SPIN_NAME};
+  const std::vector<std::string> rates = {"drho", STRESS_RATE_NAME, STRAIN_RATE_NAME, SPIN_NAME,
+                                          PORE_FLOW_NAME};
   const std::vector<std::string> state = {"rmass",     "rho",       H_NAME,     "vest",
                                           STRESS_NAME, STRAIN_NAME, LEVEL_NAME, "mu",
-                                          WALL_DISTANCE_NAME};
+                                          WALL_DISTANCE_NAME, PORE_PRESSURE_NAME};
   std::vector<std::string> all = state;
   all.insert(all.end(), rates.begin(), rates.end());
   all.push_back(SAVED_RATES_NAME);
   const std::vector<std::string> comm = {"rho", STRESS_NAME, "vest"};
   const std::vector<std::string> border = {"rmass", "rho", STRESS_NAME,       "vest",
-                                           H_NAME,  "mu",  WALL_DISTANCE_NAME};
+                                           H_NAME,  "mu",  WALL_DISTANCE_NAME, PORE_PRESSURE_NAME};
 
   using SPHSoilCompat::assign_fields;
   assign_fields(fields_grow, all, field_storage[0]);
@@ -226,6 +236,8 @@ void AtomVecSPHSoil::grow_pointers()
   wall_normal = atom->mu;
   wall_distance = arrays->wall_distance;
   saved_rates = arrays->saved_rates;
+  pore_pressure = arrays->pore_pressure;
+  pore_flow = arrays->pore_flow;
   rmass = atom->rmass;
   rho = atom->rho;
   drho = atom->drho;
@@ -280,6 +292,7 @@ void AtomVecSPHSoil::data_atom_post(int ilocal)
   for (int k = 0; k < 3; k++) vest[ilocal][k] = 0.0;
   for (int k = 0; k < 4; k++) wall_normal[ilocal][k] = 0.0;
   wall_distance[ilocal] = 0.0;
+  pore_pressure[ilocal] = pore_flow[ilocal] = 0.0;
   for (int k = 0; k < NVOIGT; k++)
     stress[ilocal][k] = stress_rate[ilocal][k] = total_strain[ilocal][k] = strain_rate[ilocal][k] = 0.0;
   for (int k = 0; k < NSPIN; k++) spin[ilocal][k] = 0.0;
@@ -340,6 +353,8 @@ void AtomVecSPHSoil::pack_property_atom(int index, double *buf, int nvalues, int
     case SPIN: array = spin; break;
     case WALL_N: array = wall_normal; break;
     case VEST: array = vest; break;
+    case PORE_PRESSURE: vector = pore_pressure; break;
+    case PORE_FLOW: vector = pore_flow; break;
     case LEVEL: break;
   }
 

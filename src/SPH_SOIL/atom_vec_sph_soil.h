@@ -61,8 +61,15 @@ class AtomVecSPHSoil : public AtomVec {
     SAVED_DRHO = 4,
     SAVED_STRAIN_RATE = 5,     // 6
     SAVED_STRESS_RATE = 11,    // 6
-    NSAVED = 17
+    SAVED_PORE_FLOW = 17,
+    NSAVED = 18
   };
+  // a saturated soil's pore pressure p (positive in compression, while the stress above is
+  // the effective stress, positive in tension: the total stress is stress - p I), and the
+  // pair style's sum of the pore water's flow, div(k/gamma_w grad(p - rho_w g.x))
+  // (soil_pore_water.h); 0 for dry soil. A wall particle's p is the pressure of a drained wall
+  double *pore_pressure;
+  double *pore_flow;
 
   // the axis along which sph_soil/set geostatic last put the overburden (0 x, 1 y, 2 z), -1
   // if never: pair_style sph/soil warns when gravity points along another
@@ -70,7 +77,7 @@ class AtomVecSPHSoil : public AtomVec {
 
   // The layout of this style's per-atom restart data has a number; a restart file of another
   // number stops read_restart with a message that names both (process_args()).
-  static constexpr int RESTART_FORMAT = 2;
+  static constexpr int RESTART_FORMAT = 3;
 
   struct Arrays {
     double *smoothing_length = nullptr;
@@ -79,6 +86,7 @@ class AtomVecSPHSoil : public AtomVec {
     int *level = nullptr;
     double *wall_distance = nullptr;
     double **saved_rates = nullptr;
+    double *pore_pressure = nullptr, *pore_flow = nullptr;
   };
 
   // Core Atom arrays with the same meaning as in atom_style sph.

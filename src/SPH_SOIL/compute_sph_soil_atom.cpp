@@ -24,6 +24,10 @@ double stress_component(const Source &s, int i, int k)
 {
   return s.avec->stress[i][k];
 }
+double total_normal_stress(const Source &s, int i, int k)
+{
+  return s.avec->stress[i][k] - s.avec->pore_pressure[i];
+}
 }    // namespace
 
 /* ----------------------------------------------------------------------
@@ -40,6 +44,12 @@ const std::vector<ComputeSPHSoilAtom::Value> &ComputeSPHSoilAtom::values()
       {{"sxz"}, nullptr, [](const Source &s, int i) { return stress_component(s, i, 4); }},
       {{"syz"}, nullptr, [](const Source &s, int i) { return stress_component(s, i, 5); }},
       {{"pressure"}, nullptr, [](const Source &s, int i) { return SPHSoil::pressure(s.avec->stress[i]); }},
+      // a saturated soil's pore pressure (0 for dry soil), and the total stress: the stress above
+      // is the effective stress (the soil skeleton's), the total stress that less the pore pressure
+      {{"pore_pressure"}, nullptr, [](const Source &s, int i) { return s.avec->pore_pressure[i]; }},
+      {{"total_sxx"}, nullptr, [](const Source &s, int i) { return total_normal_stress(s, i, 0); }},
+      {{"total_syy"}, nullptr, [](const Source &s, int i) { return total_normal_stress(s, i, 1); }},
+      {{"total_szz"}, nullptr, [](const Source &s, int i) { return total_normal_stress(s, i, 2); }},
       {{"sqrtJ2"}, nullptr, [](const Source &s, int i) { return SPHSoil::sqrt_j2(s.avec->stress[i]); }},
       {{"strain"}, nullptr,
        [](const Source &s, int i) { return SPHSoil::strain_measure(s.avec->total_strain[i]); }},

@@ -17,6 +17,7 @@
 #include "pair_sph_soil.h"
 #include "soil_constitutive.h"
 #include "soil_density_step.h"
+#include "soil_water.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
@@ -47,7 +48,8 @@ constexpr double BIG = 1.0e30;
 /* ---------------------------------------------------------------------- */
 
 FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), cfl(0.0), stable_cfl(0.2), max_dt(0.0), avec(nullptr), pair(nullptr),
+    Fix(lmp, narg, arg), cfl(0.0), stable_cfl(0.2), max_dt(0.0), max_diffusivity(0.0),
+    diffusion_bound(false), avec(nullptr), pair(nullptr),
     yielded_count(0), nstate(NSTATE_GLOBAL), integrator_state(nullptr), restore_pending(false)
 {
   time_integrate = 1;
@@ -134,10 +136,19 @@ void FixSPHSoil::init()
 
   model_of_type.assign(atom->ntypes + 1, nullptr);
   density_floor_of_type.assign(atom->ntypes + 1, 0.0);
+  storage_of_type.assign(atom->ntypes + 1, 0.0);
+  water_modulus_of_type.assign(atom->ntypes + 1, 0.0);
+  max_diffusivity = 0.0;
   for (int type = 1; type <= atom->ntypes; type++) {
     model_of_type[type] = pair->model(type);
-    if (model_of_type[type])
-      density_floor_of_type[type] = SPHSoil::DENSITY_FLOOR * pair->material(type).density;
+    if (!model_of_type[type]) continue;
+    const auto &material = pair->material(type);
+    density_floor_of_type[type] = SPHSoil::DENSITY_FLOOR * material.density;
+    if (material.water) water_modulus_of_type[type] = material.model->p_wave_modulus();
+    if (material.saturated) {
+      storage_of_type[type] = material.pore_water.storage_modulus();
+      max_diffusivity = MAX(max_diffusivity, material.pore_water.diffusivity());
+    }
   }
 
   // one integrator per particle: two fixes sph/soil over the same particles would each
@@ -166,12 +177,14 @@ void FixSPHSoil::init()
     error->warning(FLERR, "Fix sph/soil {}: group {} holds no soil particle (wall particles are "
                           "never integrated): this fix moves nothing", id, group->names[igroup]);
 
-  // the rates of the first force evaluation use vest: start it at v (ghosts, made later
-  // at setup, take it from their owners)
+  // the rates of the first force evaluation use vest: start it at v, and free water's pressure
+  // at that of its density (ghosts, made later at setup, take them from their owners)
   const int nlocal = atom->nlocal;
   for (int i = 0; i < nlocal; i++)
-    if (integrated(i))
+    if (integrated(i)) {
       for (int k = 0; k < 3; k++) atom->vest[i][k] = atom->v[i][k];
+      water_pressure(i);
+    }
 
   // (stable_timestep() sets the hierarchy of stepping per level too)
   const double dt = stable_timestep();
@@ -228,8 +241,8 @@ void FixSPHSoil::setup(int /*vflag*/)
     if (update->dt > limit)
       SPHSoilCompat::error_all(lmp, FLERR,
                                "Fix sph/soil: timestep {:.6g} exceeds the stability limit {:.6g} = "
-                               "{} * min(h) / c_p; use a smaller timestep or 'cfl 0.1'",
-                               update->dt, limit, stable_cfl);
+                               "{}; use a smaller timestep or 'cfl 0.1'",
+                               update->dt, limit, stability_bound());
   }
 }
 
@@ -261,6 +274,7 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
       x[i][a] += dtv * v[i][a];
     }
     predict(i, dtv);
+    water_pressure(i);
     check_position(i, lo, hi, first_unstable, first_outside);
   }
   stop_if_unstable(first_unstable);
@@ -352,6 +366,7 @@ template <bool LEVELS> void FixSPHSoil::kick_and_correct()
       const double *s = integrator_state[i];
       if (now == s[STEP_END] && correct(i, 0.5 * (s[STEP_END] - s[STEP_BEGIN]) * dtv)) yielded++;
     }
+    water_pressure(i);
     if (unstable(i) && lower_id(i, first_unstable)) first_unstable = i;
   }
   yielded_count = yielded;
@@ -377,7 +392,29 @@ SPH_SOIL_INLINE void FixSPHSoil::predict(int i, double step)
     avec->total_strain[i][k] += step * avec->strain_rate[i][k];
     avec->stress[i][k] += step * avec->stress_rate[i][k];
   }
+  if (storage_of_type[atom->type[i]] > 0.0) {
+    old[HEUN_PORE_RATE] = pore_pressure_rate(i);
+    avec->pore_pressure[i] += step * old[HEUN_PORE_RATE];
+  }
   model_of_type[atom->type[i]]->return_to_admissible(avec->stress[i]);
+}
+
+// free water: the pressure of its density (soil_water.h), after each change of the density
+SPH_SOIL_INLINE void FixSPHSoil::water_pressure(int i) const
+{
+  const int type = atom->type[i];
+  if (water_modulus_of_type[type] > 0.0)
+    avec->pore_pressure[i] = SPHSoil::FreeWater::pressure(
+        atom->rho[i], pair->material(type).density, water_modulus_of_type[type]);
+}
+
+// dp/dt = K_w / n (-div v + div(k / gamma_w grad(p - rho_w g.x))) (soil_pore_water.h), from
+// the rates of the last force evaluation
+SPH_SOIL_INLINE double FixSPHSoil::pore_pressure_rate(int i) const
+{
+  const double *strain_rate = avec->strain_rate[i];
+  const double divergence = strain_rate[0] + strain_rate[1] + strain_rate[2];
+  return storage_of_type[atom->type[i]] * (avec->pore_flow[i] - divergence);
 }
 
 // Heun corrector: y(t + dt) = y(t) + dt/2 (rate(t) + rate(t + dt)), the predictor having made
@@ -390,6 +427,8 @@ SPH_SOIL_INLINE bool FixSPHSoil::correct(int i, double half_step)
                     density_floor_of_type[atom->type[i]]);
   for (int k = 0; k < 6; k++)
     avec->total_strain[i][k] += half_step * (avec->strain_rate[i][k] - old[HEUN_STRAIN_RATE + k]);
+  if (storage_of_type[atom->type[i]] > 0.0)
+    avec->pore_pressure[i] += half_step * (pore_pressure_rate(i) - old[HEUN_PORE_RATE]);
 
   const auto model = model_of_type[atom->type[i]];
   double *stress = avec->stress[i];
@@ -415,7 +454,7 @@ void FixSPHSoil::initial_integrate_levels()
 {
   double **x = atom->x, **v = atom->v, **f = atom->f, **vest = atom->vest;
   double **stress = avec->stress;
-  double *rho = atom->rho;
+  double *rho = atom->rho, *pore = avec->pore_pressure;
   const double *rmass = atom->rmass, *h = avec->smoothing_length;
   const int nlocal = atom->nlocal;
   const int64_t now = update->ntimestep;
@@ -462,7 +501,7 @@ void FixSPHSoil::initial_integrate_levels()
           vest[i][a] = v_start[a] + dtv * s[MEAN_ACCELERATION + a];
         }
         s[STEP_DURATION] = duration;
-        const double begin_rho = rho[i];
+        const double begin_rho = rho[i], begin_pore = pore[i];
         double begin_stress[6];
         for (int k = 0; k < 6; k++) begin_stress[k] = stress[i][k];
         predict(i, duration);
@@ -470,6 +509,9 @@ void FixSPHSoil::initial_integrate_levels()
         s[END_RHO] = rho[i];
         s[RHO_INCREMENT] = (rho[i] - begin_rho) / length;
         rho[i] = begin_rho + s[RHO_INCREMENT];
+        s[END_PORE] = pore[i];
+        s[PORE_INCREMENT] = (pore[i] - begin_pore) / length;
+        pore[i] = begin_pore + s[PORE_INCREMENT];
         for (int k = 0; k < 6; k++) {
           s[END_STRESS + k] = stress[i][k];
           s[STRESS_INCREMENT + k] = (stress[i][k] - begin_stress[k]) / length;
@@ -479,13 +521,16 @@ void FixSPHSoil::initial_integrate_levels()
     } else if (ends == s[STEP_END]) {
       // the step's last time step: exactly the predictor's state, for the corrector
       rho[i] = s[END_RHO];
+      pore[i] = s[END_PORE];
       for (int k = 0; k < 6; k++) stress[i][k] = s[END_STRESS + k];
       for (int a = 0; a < 3; a++) vest[i][a] += dtv * s[MEAN_ACCELERATION + a];
     } else {
       rho[i] += s[RHO_INCREMENT];
+      pore[i] += s[PORE_INCREMENT];
       for (int k = 0; k < 6; k++) stress[i][k] += s[STRESS_INCREMENT + k];
       for (int a = 0; a < 3; a++) vest[i][a] += dtv * s[MEAN_ACCELERATION + a];
     }
+    water_pressure(i);
     check_position(i, lo, hi, first_unstable, first_outside);
   }
   stop_if_unstable(first_unstable);
@@ -503,6 +548,7 @@ bool FixSPHSoil::unstable(int i) const
   double sum = atom->rho[i];
   for (int a = 0; a < 3; a++) sum += atom->v[i][a] + atom->x[i][a];
   for (int k = 0; k < 6; k++) sum += avec->stress[i][k];
+  sum += avec->pore_pressure[i];
   return !(std::isfinite(sum) && atom->rho[i] > 0.0);
 }
 
@@ -596,8 +642,21 @@ double FixSPHSoil::stable_timestep()
   const double c = pair->max_wave_speed();
   if (min_h >= BIG || c <= 0.0) return update->dt;
   double dt = (cfl > 0.0 ? cfl : stable_cfl) * min_h / c;
+  // the pore pressure's diffusion (explicit: dt D / h^2 bounded, doc/theory.rst 7.3)
+  const double diffusion_dt = max_diffusivity > 0.0 ? DIFFUSION_NUMBER * min_h * min_h / max_diffusivity : BIG;
+  diffusion_bound = diffusion_dt < dt;
+  dt = MIN(dt, diffusion_dt);
   if (cfl > 0.0 && max_dt > 0.0) dt = MIN(dt, max_dt);
   return dt;
+}
+
+// the formula of the bound stable_timestep() returned last, for messages
+std::string FixSPHSoil::stability_bound() const
+{
+  if (diffusion_bound)
+    return fmt::format("{} * min(h)^2 / D, D = {:.6g} the pore pressure's largest diffusivity "
+                       "k K_w / (gamma_w n)", DIFFUSION_NUMBER, max_diffusivity);
+  return fmt::format("{} * min(h) / c_p", stable_cfl);
 }
 
 /* ----------------------------------------------------------------------
@@ -617,9 +676,9 @@ void FixSPHSoil::particles_refined(const char *who)
     SPHSoilCompat::error_all(
         lmp, FLERR,
         "{}: after splitting at step {} the timestep {:.6g} exceeds the stability "
-        "limit {:.6g} = {} * min(h) / c_p; use 'cfl 0.1' in fix sph/soil (adaptive "
+        "limit {:.6g} = {}; use 'cfl 0.1' in fix sph/soil (adaptive "
         "step) or a timestep <= {:.6g}",
-        who, update->ntimestep, update->dt, limit, stable_cfl, limit);
+        who, update->ntimestep, update->dt, limit, stability_bound(), limit);
 }
 
 void FixSPHSoil::adapt_timestep()
@@ -655,6 +714,7 @@ void FixSPHSoil::save_rates(int i) const
     saved[A::SAVED_STRAIN_RATE + k] = avec->strain_rate[i][k];
     saved[A::SAVED_STRESS_RATE + k] = avec->stress_rate[i][k];
   }
+  saved[A::SAVED_PORE_FLOW] = avec->pore_flow[i];
 }
 
 // (used once: the flag goes back to 0)
@@ -668,6 +728,7 @@ void FixSPHSoil::restore_rates(int i)
     avec->strain_rate[i][k] = saved[A::SAVED_STRAIN_RATE + k];
     avec->stress_rate[i][k] = saved[A::SAVED_STRESS_RATE + k];
   }
+  avec->pore_flow[i] = saved[A::SAVED_PORE_FLOW];
   saved[A::SAVED_FLAG] = 0.0;
 }
 

@@ -80,35 +80,53 @@ class FixSPHSoil : public Fix {
   double cfl;           // adaptive time step dt = cfl * min h / c_p (0: fixed time step)
   double stable_cfl;    // largest cfl accepted for a user-fixed time step
   double max_dt;        // upper bound of the adaptive step (0: none)
+  // the pore pressure's largest diffusivity (soil_pore_water.h; 0 without saturated soil) and
+  // the bound it puts on the step, dt <= DIFFUSION_NUMBER h^2 / D
+  double max_diffusivity;
+  static constexpr double DIFFUSION_NUMBER = 0.1;
+  bool diffusion_bound;    // whether the last stable_timestep() was the diffusion's
+  std::string stability_bound() const;
   SPHSoil::StepSchedule schedule;    // the time step per level (stepping level), or off
   class AtomVecSPHSoil *avec;
   class PairSPHSoil *pair;
   std::vector<const SPHSoil::ConstitutiveModel *> model_of_type;    // owned by the pair style
   std::vector<double> density_floor_of_type;    // SPHSoil::DENSITY_FLOOR of the material's rho0
+  // K_w / n of a saturated soil type (soil_pore_water.h), 0 for a dry one: dp/dt = K_w / n
+  // (-div v + the pair style's pore flow)
+  std::vector<double> storage_of_type;
+  double pore_pressure_rate(int i) const;
+  // K_w of a free water type (soil_water.h), 0 otherwise: its pressure follows its density
+  std::vector<double> water_modulus_of_type;
+  void water_pressure(int i) const;
   bigint yielded_count;
 
   // The integrator's own per-atom state, one row per atom (the current rates live in the atom
   // style, where the pair style writes them): at the start of each step, the density's
-  // logarithmic rate (drho / rho) and the strain rate, for the Heun corrector. (The rates of
+  // logarithmic rate (drho / rho), the strain rate and the pore pressure's rate, for the Heun
+  // corrector. (The rates of
   // the last step of a run, which the next run starts from, are the atom style's saved_rates.)
   // Stepping per level adds the particle's own step: the LAMMPS steps it began and ends at, its
-  // duration (s), the increments of its density and stress per time step (from the start to
-  // the predictor's state at the end) and that end state, its velocity at the start and the
+  // duration (s), the increments of its density, stress and pore pressure per time step (from
+  // the start to the predictor's state at the end) and that end state, its velocity at the start
+  // and the
   // mean acceleration of its last step (the velocity partners see of it between its steps' ends).
   enum {
     HEUN_LOG_DRHO = 0,
     HEUN_STRAIN_RATE = 1,
-    NSTATE_GLOBAL = 7,
-    STEP_BEGIN = 7,
-    STEP_END = 8,
-    STEP_DURATION = 9,
-    RHO_INCREMENT = 10,
-    STRESS_INCREMENT = 11,
-    END_RHO = 17,
-    END_STRESS = 18,
-    BEGIN_VELOCITY = 24,
-    MEAN_ACCELERATION = 27,
-    NSTATE_LEVELS = 30
+    HEUN_PORE_RATE = 7,
+    NSTATE_GLOBAL = 8,
+    STEP_BEGIN = 8,
+    STEP_END = 9,
+    STEP_DURATION = 10,
+    RHO_INCREMENT = 11,
+    STRESS_INCREMENT = 12,
+    END_RHO = 18,
+    END_STRESS = 19,
+    BEGIN_VELOCITY = 25,
+    MEAN_ACCELERATION = 28,
+    PORE_INCREMENT = 31,
+    END_PORE = 32,
+    NSTATE_LEVELS = 33
   };
   int nstate;
   double **integrator_state;

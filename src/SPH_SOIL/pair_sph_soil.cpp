@@ -20,6 +20,7 @@
 #include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
+#include "sph_soil_pore_water.h"
 #include "sph_soil_walls.h"
 #include "utils.h"
 
@@ -35,8 +36,8 @@ constexpr int PairSPHSoil::RESTART_FORMAT;
 /* ---------------------------------------------------------------------- */
 
 PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
-    Pair(lmp), has_artificial_stress(false), materials(lmp),
-    walls(new SPHSoilWalls(lmp, this)), sound_speed_ij(nullptr), max_h(0.0), avec(nullptr),
+    Pair(lmp), has_artificial_stress(false), multiphase(false), materials(lmp),
+    walls(new SPHSoilWalls(lmp, this)), pore_water(new SPHSoilPoreWater(lmp, this)), sound_speed_ij(nullptr), max_h(0.0), avec(nullptr),
     warned_density(false), warned_spacing(false), warned_coinciding(false), nmax_packed(0),
     packed(nullptr), sums(nullptr), schedule(nullptr), nmax_periods(0), step_periods(nullptr), atom_periods(nullptr),
     periods_finest_h(-1.0),
@@ -50,8 +51,9 @@ PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
   // the forces are pairwise and reach the ghosts (Newton's third law): x . f over owned and
   // ghost atoms is the virial (LAMMPS asks for it with newton on); pair by pair otherwise
   no_virial_fdotr_compute = 0;
-  comm_forward = walls->forward_size();
-  comm_reverse = walls->reverse_size();
+  // (the pore water sends one number per atom)
+  comm_forward = MAX(walls->forward_size(), 1);
+  comm_reverse = MAX(walls->reverse_size(), 1);
   skin_fix_id = "SPH_SOIL_SKIN_" + std::to_string(instance_me);
 }
 
@@ -226,6 +228,10 @@ void PairSPHSoil::init_style()
   }
 
   walls->init();
+  pore_water->init(materials.all(), materials.set_flags());
+  // free water: the momentum sum's multiphase form (see the header)
+  multiphase = false;
+  for (int t = 1; t <= atom->ntypes; t++) multiphase = multiphase || materials.of(t).water;
   schedule = SPHSoilFixes::step_schedule(lmp);
   // the fix that keeps our list valid between LAMMPS's reneighbourings (created once, as
   // pair_granular creates its history fix)
@@ -322,26 +328,30 @@ void *PairSPHSoil::extract(const char *name, int &dim)
 }
 
 /* ----------------------------------------------------------------------
-   the extrapolated walls' communication belongs to the walls
+   the communication belongs to the pore water while it sends, else to the walls
 ------------------------------------------------------------------------- */
 
 int PairSPHSoil::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
+  if (pore_water->communicating()) return pore_water->pack_forward_comm(n, list, buf);
   return walls->pack_forward_comm(n, list, buf);
 }
 
 void PairSPHSoil::unpack_forward_comm(int n, int first, double *buf)
 {
+  if (pore_water->communicating()) return pore_water->unpack_forward_comm(n, first, buf);
   walls->unpack_forward_comm(n, first, buf);
 }
 
 int PairSPHSoil::pack_reverse_comm(int n, int first, double *buf)
 {
+  if (pore_water->communicating()) return pore_water->pack_reverse_comm(n, first, buf);
   return walls->pack_reverse_comm(n, first, buf);
 }
 
 void PairSPHSoil::unpack_reverse_comm(int n, int *list, double *buf)
 {
+  if (pore_water->communicating()) return pore_water->unpack_reverse_comm(n, list, buf);
   walls->unpack_reverse_comm(n, list, buf);
 }
 

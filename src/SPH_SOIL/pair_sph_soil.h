@@ -13,6 +13,7 @@
      pair_sph_soil_checks.cpp  the set-up checks of the particles
      pair_sph_soil_loop.cpp    the packed rows, the loop, the virial
      sph_soil_walls.h          everything about wall particles
+     sph_soil_pore_water.h     the pore water of saturated soil
      soil_neighbours.h         the list; fix SPH_SOIL_SKIN keeps it valid
 ------------------------------------------------------------------------- */
 
@@ -92,13 +93,15 @@ class PairSPHSoil : public Pair {
   SPHSoil::KernelKind kernel;    // the pair loop is compiled once per kernel
   SPHSoilMaterials materials;
   std::unique_ptr<class SPHSoilWalls> walls;
+  std::unique_ptr<class SPHSoilPoreWater> pore_water;
   double **sound_speed_ij;    // mean P-wave speed of a type pair
   double max_h;               // largest smoothing length at init
   class AtomVecSPHSoil *avec;
   void set_defaults();
   void allocate();
 
-  // the extrapolated walls' communication (sph_soil_walls.h)
+  // the communication of the extrapolated walls (sph_soil_walls.h) and of the pore water
+  // (sph_soil_pore_water.h)
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   int pack_reverse_comm(int, int, double *) override;
@@ -125,7 +128,13 @@ class PairSPHSoil : public Pair {
   int nmax_packed;
   double *packed;
   double *sums;
-  template <int DIMENSION> void pack_atoms();
+  // the momentum sum's form: m_i m_j (sigma_i / rho_i^2 + sigma_j / rho_j^2) (Bui 2008), or, in
+  // runs with free water, V_i V_j (sigma_i + sigma_j) (Colagrossi & Landrini 2003: the same for
+  // particles of one density, and right across the jump from water to soil, where the first
+  // form makes the interface unstable; doc/theory.rst 7.5). The packed rows then hold the stress
+  // itself, not stress / rho^2
+  bool multiphase;
+  template <int DIMENSION, bool PHASES> void pack_atoms();
   // with a time step per level (fix sph/soil's schedule, soil_level_steps.h): per owned and
   // ghost atom its signed period (+n: it ends a step at this evaluation, -n: not; a wall
   // particle -infinity, it takes its partner's), from its h
@@ -145,14 +154,10 @@ class PairSPHSoil : public Pair {
   enum { A_STRESS = 0, A_INVERSE_SHAPE = 6, ARTIFICIAL = 7 };
   int nmax_artificial;
   double *artificial;
-  template <int DIMENSION, class Kernel> void pack_artificial_stress();
-  template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL, bool LEVELS> void eval();
-  struct PairGeometry {
-    double dx[3], r2, r, inv_h, hij, factor;
-  };
-  template <int DIMENSION, class Kernel>
-  static bool pair_geometry(const double *xi, double hi, const double *pj, PairGeometry &g);
-  template <int DIMENSION, bool VIRIAL>
+  template <int DIMENSION, class Kernel, bool PHASES> void pack_artificial_stress();
+  template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL, bool LEVELS, bool PHASES>
+  void eval();
+  template <int DIMENSION, bool VIRIAL, bool PHASES>
   void mirror_wall_pair(int soil, int wall, double sign, const double dx[3], double r2, double hij,
                         double factor, double c_ij, double weight);
   // with_kernel() calls it with the kernel type: picks the dimension, whether the loop adds the
@@ -161,7 +166,7 @@ class PairSPHSoil : public Pair {
   struct Evaluate {
     PairSPHSoil *pair;
     int dimension;
-    bool artificial_stress, virial, levels;
+    bool artificial_stress, virial, levels, phases;
     template <class Kernel> void operator()() const;
   };
 

@@ -15,6 +15,7 @@
 #include "soil_pair_terms.h"
 #include "soil_refine_split.h"
 #include "soil_wall_images.h"
+#include "sph_soil_pore_water.h"
 #include "sph_soil_wall_friction.h"
 #include "sph_soil_walls.h"
 #include "update.h"
@@ -32,6 +33,8 @@ using SPHSoil::P_STRESS;
 using SPHSoil::P_V;
 using SPHSoil::P_VOLUME;
 using SPHSoil::P_X;
+using SPHSoil::pair_geometry;
+using SPHSoil::PairGeometry;
 
 // kept out of line (GCC and Clang would inline it into the pair loop)
 #if defined(__GNUC__)
@@ -54,8 +57,10 @@ void PairSPHSoil::compute(int eflag, int vflag)
   const bool levels = per_level();
   if (levels) pack_step_periods();
   if (walls->interface()) walls->interface()->set_step_periods(levels ? step_periods : nullptr);
+  // the ghosts' pore pressure, for the total stress of the packed rows and the flow
+  if (pore_water->pressures()) pore_water->share_pressures();
   SPHSoil::with_kernel(kernel, Evaluate{this, domain->dimension, has_artificial_stress,
-                                        vflag_either != 0, levels});
+                                        vflag_either != 0, levels, multiphase});
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
@@ -64,16 +69,20 @@ template <class Kernel> void PairSPHSoil::Evaluate::operator()() const
   // (a table of member-function pointers: one branch instead of a tree of them)
   using Eval = void (PairSPHSoil::*)();
   using P = PairSPHSoil;
-  static const Eval table[2][2][2][2] = {
-      {{{&P::eval<2, Kernel, false, false, false>, &P::eval<2, Kernel, false, false, true>},
-        {&P::eval<2, Kernel, false, true, false>, &P::eval<2, Kernel, false, true, true>}},
-       {{&P::eval<2, Kernel, true, false, false>, &P::eval<2, Kernel, true, false, true>},
-        {&P::eval<2, Kernel, true, true, false>, &P::eval<2, Kernel, true, true, true>}}},
-      {{{&P::eval<3, Kernel, false, false, false>, &P::eval<3, Kernel, false, false, true>},
-        {&P::eval<3, Kernel, false, true, false>, &P::eval<3, Kernel, false, true, true>}},
-       {{&P::eval<3, Kernel, true, false, false>, &P::eval<3, Kernel, true, false, true>},
-        {&P::eval<3, Kernel, true, true, false>, &P::eval<3, Kernel, true, true, true>}}}};
-  (pair->*table[dimension == 3][artificial_stress][virial][levels])();
+#define SPH_SOIL_EVAL_PAIR(D, A, V, L) \
+  {&P::eval<D, Kernel, A, V, L, false>, &P::eval<D, Kernel, A, V, L, true>}
+#define SPH_SOIL_EVAL_LEVELS(D, A, V) \
+  {SPH_SOIL_EVAL_PAIR(D, A, V, false), SPH_SOIL_EVAL_PAIR(D, A, V, true)}
+#define SPH_SOIL_EVAL_VIRIAL(D, A) \
+  {SPH_SOIL_EVAL_LEVELS(D, A, false), SPH_SOIL_EVAL_LEVELS(D, A, true)}
+#define SPH_SOIL_EVAL_DIMENSION(D) \
+  {SPH_SOIL_EVAL_VIRIAL(D, false), SPH_SOIL_EVAL_VIRIAL(D, true)}
+  static const Eval table[2][2][2][2][2] = {SPH_SOIL_EVAL_DIMENSION(2), SPH_SOIL_EVAL_DIMENSION(3)};
+#undef SPH_SOIL_EVAL_PAIR
+#undef SPH_SOIL_EVAL_LEVELS
+#undef SPH_SOIL_EVAL_VIRIAL
+#undef SPH_SOIL_EVAL_DIMENSION
+  (pair->*table[dimension == 3][artificial_stress][virial][levels][phases])();
 }
 
 /* ----------------------------------------------------------------------
@@ -119,7 +128,7 @@ void PairSPHSoil::pack_step_periods()
    eight arrays; and the accumulators of the sums, set to zero
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION> void PairSPHSoil::pack_atoms()
+template <int DIMENSION, bool PHASES> void PairSPHSoil::pack_atoms()
 {
   const int nall = atom->nlocal + atom->nghost;
   if (nall > nmax_packed) {
@@ -131,17 +140,23 @@ template <int DIMENSION> void PairSPHSoil::pack_atoms()
   }
   double **x = atom->x, **vest = atom->vest, **stress = avec->stress;
   const double *rho = atom->rho, *rmass = atom->rmass, *h = avec->smoothing_length;
+  const double *pore_pressure = avec->pore_pressure;
   for (int i = 0; i < nall; i++) {
     double *row = packed + (size_t) i * SPHSoil::PACKED;
     const double inv_rho = 1.0 / rho[i];
-    const double inv_rho2 = inv_rho * inv_rho;
+    // (the multiphase form sums the stress itself)
+    const double inv_rho2 = PHASES ? 1.0 : inv_rho * inv_rho;
     // soil: fix sph/soil's estimate of v(t + dt); a wall: its velocity (the walls' fix
     // SPH_SOIL_WALLS copies it there after the fixes that move walls have run)
     for (int a = 0; a < 3; a++) {
       row[P_X + a] = x[i][a];
       row[P_V + a] = vest[i][a];
     }
-    for (int k = 0; k < 6; k++) row[P_STRESS + k] = stress[i][k] * inv_rho2;
+    // the total stress: a saturated soil's effective stress less its pore pressure (0 for
+    // dry soil; a drained wall's own is not the soil's, and no wall particle's stress is used)
+    const double pore = pore_pressure[i];
+    for (int k = 0; k < 3; k++) row[P_STRESS + k] = (stress[i][k] - pore) * inv_rho2;
+    for (int k = 3; k < 6; k++) row[P_STRESS + k] = stress[i][k] * inv_rho2;
     row[P_VOLUME] = rmass[i] * inv_rho;
     row[P_MASS] = rmass[i];
     row[P_RHO] = rho[i];
@@ -155,7 +170,7 @@ template <int DIMENSION> void PairSPHSoil::pack_atoms()
    the types without it, and 1 / w(d / h) for the pair's weight (see the header)
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION, class Kernel> void PairSPHSoil::pack_artificial_stress()
+template <int DIMENSION, class Kernel, bool PHASES> void PairSPHSoil::pack_artificial_stress()
 {
   const int nall = atom->nlocal + atom->nghost;
   if (atom->nmax > nmax_artificial) {
@@ -171,6 +186,9 @@ template <int DIMENSION, class Kernel> void PairSPHSoil::pack_artificial_stress(
     if (type_artificial_stress[type[i]]) {
       SPHSoil::artificial_stress<DIMENSION>(stress[i], rho[i], artificial_stress_epsilon,
                                             row + A_STRESS);
+      // (in the units of the packed stress: the multiphase form's is the stress itself)
+      if (PHASES)
+        for (int k = 0; k < 6; k++) row[A_STRESS + k] *= rho[i] * rho[i];
     } else {
       for (int k = 0; k < 6; k++) row[A_STRESS + k] = 0.0;
     }
@@ -211,39 +229,13 @@ template <int DIMENSION> void PairSPHSoil::unpack_sums()
 }
 
 /* ----------------------------------------------------------------------
-   a pair's separation dx = x_i - x_j, r, h_ij and gradient factor (grad W = factor dx), from
-   i's position and h and j's packed row; false beyond the support (the list has a skin)
-------------------------------------------------------------------------- */
-
-template <int DIMENSION, class Kernel>
-inline bool PairSPHSoil::pair_geometry(const double *xi, double hi, const double *pj,
-                                       PairGeometry &g)
-{
-  g.dx[0] = xi[0] - pj[P_X];
-  g.dx[1] = xi[1] - pj[P_X + 1];
-  g.dx[2] = DIMENSION == 3 ? xi[2] - pj[P_X + 2] : 0.0;
-  g.r2 = g.dx[0] * g.dx[0] + g.dx[1] * g.dx[1] + g.dx[2] * g.dx[2];
-  g.hij = 0.5 * (hi + pj[P_H]);
-  constexpr double SUPPORT2 = Kernel::SUPPORT * Kernel::SUPPORT;
-  if (g.r2 >= SUPPORT2 * g.hij * g.hij) return false;
-  // the square root and the two divisions are independent of each other, so that the
-  // processor overlaps them; at r = 0 (coinciding particles) q = 0 takes the kernel's inner
-  // piece, and 1/max(r^2, DBL_MIN) keeps the unused h/r finite (0) without a branch
-  g.r = sqrt(g.r2);
-  g.inv_h = 1.0 / g.hij;
-  const double inv_r2 = 1.0 / std::max(g.r2, DBL_MIN);
-  g.factor = Kernel::template gradient_factor_inside<DIMENSION>(g.r, g.inv_h, g.hij * g.r * inv_r2);
-  return true;
-}
-
-/* ----------------------------------------------------------------------
    soil particle s and the image of mirror wall particle w (soil_wall_images.h): s takes its
    share, w the opposite force (Newton's third law: the soil's force on the structure); a wall
    moved by a fix (move, rigid) brings its velocity, a wall at rest has v_w = 0 and the terms of
    a static wall. `sign` dx = x_s - x_w.
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION, bool VIRIAL>
+template <int DIMENSION, bool VIRIAL, bool PHASES>
 SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double sign,
                                                      const double dx[3], double r2, double hij,
                                                      double factor, double c_ij, double weight)
@@ -268,8 +260,14 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   const double viscosity_h =
       SPHSoil::viscosity_length(viscosity_h0, SPHSoil::viscosity_h_weight(viscosity_h0), hij);
   SPHSoil::PairTerms<D> terms;
+  // (the multiphase form: the mean density's place holds (rho_s + rho_s) / (2 rho_s rho_s))
   SPHSoil::pair_terms<D>(separation, r2, hij, viscosity_h, factor, image.dv, image.approach,
-                         image.stress_sum, rhos, c_ij, viscosity_alpha, viscosity_beta, terms);
+                         image.stress_sum, PHASES ? 1.0 / rhos : rhos, c_ij, viscosity_alpha,
+                         viscosity_beta, terms);
+  // the image's volume: the wall particle's mass at the soil's density
+  const double mw = pw[P_MASS], volume = mw / rhos;
+  const double mass_product =
+      weight * (PHASES ? ps[P_VOLUME] * volume : ps[P_MASS] * mw);
   // a smooth or frictional wall pushes along its normal only, and never pulls (an interface
   // carries no tension: a soil in tension comes off it); a frictional wall's pushing pairs go
   // to the interface, which adds the friction after all forces of the step (doc/theory.rst 4.4)
@@ -280,16 +278,13 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
           SPHSoil::contact_area(ps[P_VOLUME], pw[P_MASS] / rhos, factor, image.normal_separation);
       // (stepping per level: the impulse of the pair's period; the area in proportion, so that
       // the interface's pressure is the contact's)
-      walls->interface()->add_pair(soil, wall, weight * ps[P_MASS] * pw[P_MASS] * push,
+      walls->interface()->add_pair(soil, wall, mass_product * push,
                                    walls->frictions()[wall_type], normal, pw + P_V,
                                    walls->adhesions()[wall_type], weight * area, update_soil,
                                    update_wall);
     }
   }
 
-  const double mw = pw[P_MASS], mass_product = weight * ps[P_MASS] * mw;
-  // the image's volume: the wall particle's mass at the soil's density
-  const double volume = mw / rhos;
   if (VIRIAL)
     ev_tally_xyz(soil, wall, nlocal, newton_pair, 0.0, 0.0, mass_product * terms.force[0],
                  mass_product * terms.force[1], D == 3 ? mass_product * terms.force[2] : 0.0,
@@ -314,7 +309,7 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
    communication (the atom style carries drho, strain rate and spin back)
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL, bool LEVELS>
+template <int DIMENSION, class Kernel, bool ARTIFICIAL_STRESS, bool VIRIAL, bool LEVELS, bool PHASES>
 void PairSPHSoil::eval()
 {
   using SPHSoil::voigt_index;
@@ -329,9 +324,9 @@ void PairSPHSoil::eval()
   const int *const wall_kind = walls->kinds();
   const int newton_pair = force->newton_pair;
 
-  pack_atoms<D>();    // (re)allocates the packed rows: take their addresses after it
-  walls->prepare(packed, neighbours, kernel, D);
-  if (ARTIFICIAL_STRESS) pack_artificial_stress<D, Kernel>();
+  pack_atoms<D, PHASES>();    // (re)allocates the packed rows: take their addresses after it
+  walls->prepare(packed, neighbours, kernel, D, PHASES);
+  if (ARTIFICIAL_STRESS) pack_artificial_stress<D, Kernel, PHASES>();
   const int *const artificial_type = type_artificial_stress.data();
   const double *const in = packed;
   double *const out = sums;
@@ -356,6 +351,8 @@ void PairSPHSoil::eval()
     for (int k = 0; k < 6; k++) si[k] = pi[P_STRESS + k];
     const double hi = pi[P_H];
     const double mi = pi[P_MASS], rhoi = pi[P_RHO], volume_i = pi[P_VOLUME];
+    // the momentum sum's factor of i: its mass, or its volume (the multiphase form)
+    const double product_i = PHASES ? volume_i : mi;
     const double *c_i = c_type[itype];
     // the plain pairs to visit: all of i's, or, with stepping per level, where i does not end a
     // step, those whose partner does (collected here; none: nothing to do for i, most of the
@@ -422,11 +419,16 @@ void PairSPHSoil::eval()
       for (int a = 0; a < D; a++) approach += dv[a] * g.dx[a];
       SPHSoil::PairTerms<D> terms;
       const double viscosity_h = SPHSoil::viscosity_length(h0, h0_weight, g.hij);
-      SPHSoil::pair_terms<D>(g.dx, g.r2, g.hij, viscosity_h, g.factor, dv, approach, stress_sum, 0.5 * (rhoi + pj[P_RHO]), c_i[jtype], alpha,
-                             beta_viscosity, terms);
+      // the multiphase form: (rho_i + rho_j) / (2 rho_i rho_j) in the mean density's place, so
+      // that V_i V_j Pi is m_i m_j Pi
+      const double rhoj = pj[P_RHO];
+      const double mean_density = PHASES ? 0.5 * (rhoi + rhoj) / (rhoi * rhoj) : 0.5 * (rhoi + rhoj);
+      SPHSoil::pair_terms<D>(g.dx, g.r2, g.hij, viscosity_h, g.factor, dv, approach, stress_sum,
+                             mean_density, c_i[jtype], alpha, beta_viscosity, terms);
 
-      const double mj = pj[P_MASS], volume_j = pj[P_VOLUME];
-      const double mass_product = LEVELS ? weight * mi * mj : mi * mj;
+      const double volume_j = pj[P_VOLUME];
+      const double product_j = PHASES ? volume_j : pj[P_MASS];
+      const double mass_product = LEVELS ? weight * product_i * product_j : product_i * product_j;
       if (VIRIAL)
         ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, mass_product * terms.force[0],
                      mass_product * terms.force[1], D == 3 ? mass_product * terms.force[2] : 0.0,
@@ -465,11 +467,13 @@ void PairSPHSoil::eval()
       }
       PairGeometry g;
       if (!pair_geometry<D, Kernel>(xi, hi, in + (size_t) j * SPHSoil::PACKED, g)) continue;
-      mirror_wall_pair<D, VIRIAL>(wall_i ? j : i, wall_i ? i : j, wall_i ? -1.0 : 1.0, g.dx, g.r2, g.hij,
+      mirror_wall_pair<D, VIRIAL, PHASES>(wall_i ? j : i, wall_i ? i : j, wall_i ? -1.0 : 1.0, g.dx, g.r2, g.hij,
                           g.factor, c_i[type[j]], weight);
     }
   }
 
   unpack_sums<D>();
+  // the pore water's flow: a loop of its own, so that runs of dry soil pay nothing for it
+  if (pore_water->flows()) pore_water->flow(packed, neighbours, kernel, D);
 }
 

@@ -6,6 +6,7 @@
 
 #include "soil_models.h"
 #include "soil_tensor.h"
+#include "soil_water.h"
 
 #include <cctype>
 #include <cmath>
@@ -36,12 +37,12 @@ static bool wall_number(const std::string &name, const std::vector<std::string> 
 }
 
 // wall [noslip | freeslip | friction mu | delta degrees] [adhesion c_a]
-//      [boundary mirror | extrapolate], in any order
+//      [boundary mirror | extrapolate] [drained], in any order
 static bool wall_from_words(const std::string &name, const std::vector<std::string> &words,
                             SoilMaterial &material, std::string &error)
 {
   const std::string usage = "(allowed: noslip, freeslip, friction <mu>, delta <degrees>, "
-                            "adhesion <c_a>, boundary mirror|extrapolate)";
+                            "adhesion <c_a>, boundary mirror|extrapolate, drained)";
   bool slip_given = false, boundary_given = false, adhesion_given = false;
   for (size_t k = 1; k < words.size(); k++) {
     const std::string &word = words[k];
@@ -63,6 +64,12 @@ static bool wall_from_words(const std::string &name, const std::vector<std::stri
           return false;
         material.friction = std::tan(degrees * DEG2RAD);
       }
+    } else if (word == "drained") {
+      if (material.drained) {
+        error = "material " + name + ": wall drained given twice";
+        return false;
+      }
+      material.drained = true;
     } else if (word == "adhesion") {
       adhesion_given = true;
       if (!wall_number(name, words, k, "value c_a (stress units)", 0.0, -1.0, material.adhesion, error))
@@ -102,13 +109,29 @@ bool SPHSoil::material_from_words(const std::string &name, const std::vector<std
   material.words = words;
   if (words.empty()) {
     error = "material " + name + ": expected 'soil rho0 model parameters' (models: " +
-        model_keywords() + ") or 'wall'";
+        model_keywords() + "), 'wall' or 'water rho_w K_w'";
     return false;
   }
   if (words[0] == "wall") return wall_from_words(name, words, material, error);
-  if (words[0] != "soil") {
-    error = "material " + name + ": unknown kind '" + words[0] + "' (allowed: soil, wall)";
+  if (words[0] != "soil" && words[0] != "water") {
+    error = "material " + name + ": unknown kind '" + words[0] + "' (allowed: soil, wall, water)";
     return false;
+  }
+  if (words[0] == "water") {
+    if (words.size() < 2 || !parse_finite_number(words[1], material.density) ||
+        !(material.density > 0.0)) {
+      error = "material " + name + ": water needs its density rho_w, finite and > 0" +
+          (words.size() < 2 ? std::string() : ", got " + words[1]);
+      return false;
+    }
+    auto water = FreeWater::from_words({words.begin() + 2, words.end()}, error);
+    if (!water) {
+      error = "material " + name + ": " + error;
+      return false;
+    }
+    material.model = std::move(water);
+    material.water = true;
+    return true;
   }
   if (words.size() < 2) {
     error = "material " + name + ": 'soil' needs rho0 and a model with its parameters";
@@ -124,7 +147,19 @@ bool SPHSoil::material_from_words(const std::string &name, const std::vector<std
   const bool named = words.size() > 2 && std::isalpha((unsigned char) words[2][0]) &&
       !parse_number(words[2], number);
   const std::string keyword = named ? words[2] : DEFAULT_MODEL;
-  const std::vector<std::string> parameters(words.begin() + (named ? 3 : 2), words.end());
+  std::vector<std::string> parameters(words.begin() + (named ? 3 : 2), words.end());
+  // the pore water's words, wherever they stand after the model word (soil_pore_water.h)
+  if (!PoreWater::from_words(parameters, material.pore_water, material.saturated, error)) {
+    error = "material " + name + ": " + error;
+    return false;
+  }
+  if (material.saturated) {
+    const std::string problem = material.pore_water.check_density(material.density);
+    if (!problem.empty()) {
+      error = "material " + name + ": " + problem;
+      return false;
+    }
+  }
   std::unique_ptr<ConstitutiveModel> model = make_model(keyword, parameters, error);
   if (!model) {
     error = "material " + name + ": " + error;

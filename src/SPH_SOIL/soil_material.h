@@ -9,14 +9,19 @@
 
      name  soil  rho0  model  parameters...     (model: see soil_models.h)
      name  soil  rho0  K nu phi psi c           (no model word: drucker_prager)
-     name  wall  [noslip | freeslip | friction mu]  [boundary mirror | extrapolate]
+     name  soil  rho0  model parameters... porosity n permeability k ...  (saturated:
+                                                 soil_pore_water.h; rho0 the saturated density)
+     name  wall  [noslip | freeslip | friction mu]  [boundary mirror | extrapolate]  [drained]
+     name  water  rho_w  K_w                    (free water: soil_water.h)
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SOIL_MATERIAL_H
 #define LMP_SOIL_MATERIAL_H
 
 #include "soil_constitutive.h"
+#include "soil_pore_water.h"
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,14 +44,25 @@ struct SoilMaterial {
   double friction = 0.0;                              // Coulomb coefficient, WallSlip::friction
   double adhesion = 0.0;                              // c_a (Pa), WallSlip::friction
   WallBoundary boundary = WallBoundary::mirror;       // walls only
+  // walls only: the pore water of saturated soil drains through the wall at the wall
+  // particles' own pore pressure (a filter, a porous stone), else it is impermeable
+  bool drained = false;
+  bool saturated = false;                             // a soil with pore water
+  bool water = false;                                 // free water (model: SPHSoil::FreeWater)
+  PoreWater pore_water;                               // its water, if saturated
   // the words that defined it (after its name): material_from_words(name, words) builds it
   // again, e.g. from a restart file
   std::vector<std::string> words;
 
   bool is_wall() const { return !model; }
-  // elastic P-wave speed sqrt((K + 4G/3)/rho_0) of a soil: bounds the time step, scales the
-  // viscosity; 0 for a wall
-  double wave_speed() const { return model ? model->wave_speed(density) : 0.0; }
+  // elastic P-wave speed sqrt((K + 4G/3)/rho_0) of a soil, undrained for a saturated one
+  // (sqrt((K + 4G/3 + K_w/n)/rho_sat)): bounds the time step, scales the viscosity; 0 for a wall
+  double wave_speed() const
+  {
+    if (!model) return 0.0;
+    const double modulus = model->p_wave_modulus() + (saturated ? pore_water.storage_modulus() : 0.0);
+    return std::sqrt(modulus / density);
+  }
 };
 
 // Build a material from words: {"soil", rho0, [model,] parameters...} or {"wall", options...}.

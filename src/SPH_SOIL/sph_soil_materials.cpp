@@ -50,10 +50,11 @@ void SPHSoilMaterials::coeff(int narg, char **arg)
     SPHSoilCompat::error_all(
         lmp, FLERR,
         "Incorrect args for pair_coeff sph/soil: expected 'I I soil rho0 model "
-        "parameters' (models: {}), 'I I wall' or '* * file name1 ... name{}'",
+        "parameters' (models: {}), 'I I wall', 'I I water rho_w K_w' or '* * file name1 ... "
+        "name{}'",
         SPHSoil::model_usages(), ntypes);
 
-  if (strcmp(arg[2], "soil") == 0 || strcmp(arg[2], "wall") == 0) {
+  if (strcmp(arg[2], "soil") == 0 || strcmp(arg[2], "wall") == 0 || strcmp(arg[2], "water") == 0) {
     int ilo, ihi, jlo, jhi;
     utils::bounds(FLERR, arg[0], 1, ntypes, ilo, ihi, error);
     utils::bounds(FLERR, arg[1], 1, ntypes, jlo, jhi, error);
@@ -73,7 +74,7 @@ void SPHSoilMaterials::coeff(int narg, char **arg)
     SPHSoilCompat::error_all(
         lmp, FLERR,
         "Incorrect args for pair_coeff sph/soil: unknown material kind '{}' for "
-        "types {} {} (allowed: soil, wall; a material file takes '* * file name1 ... "
+        "types {} {} (allowed: soil, wall, water; a material file takes '* * file name1 ... "
         "name{}')",
         arg[2], arg[0], arg[1], ntypes);
   if (narg != 3 + ntypes)

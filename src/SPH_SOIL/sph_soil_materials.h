@@ -22,7 +22,8 @@ class SPHSoilMaterials : protected Pointers {
 
   // room for types 1..ntypes, none set
   void allocate(int ntypes);
-  // pair_coeff's arguments: 'I I soil rho0 model parameters', 'I I wall options', or
+  // pair_coeff's arguments: 'I I soil rho0 model parameters', 'I I wall options', 'I I water
+  // rho_w K_w', or
   // '* * file name1 ... nameN'
   void coeff(int narg, char **arg);
 

@@ -69,7 +69,7 @@ SPHSoilRefineMerger::~SPHSoilRefineMerger()
 /* ----------------------------------------------------------------------
    the values a merge mass-averages: stress, total strain, stress rate,
    strain rate, spin, the density rate per density (so that the merged particle's volume
-   changes at the rate of the siblings' together)
+   changes at the rate of the siblings' together), the pore pressure and its flow
 ------------------------------------------------------------------------- */
 
 void SPHSoilRefineMerger::merge_values(int i, double *values) const
@@ -82,6 +82,8 @@ void SPHSoilRefineMerger::merge_values(int i, double *values) const
   for (int k = 0; k < 6; k++) values[m++] = avec->strain_rate[i][k];
   for (int k = 0; k < 3; k++) values[m++] = avec->spin[i][k];
   values[m++] = atom->drho[i] / atom->rho[i];
+  values[m++] = avec->pore_pressure[i];
+  values[m++] = avec->pore_flow[i];
 }
 
 /* ----------------------------------------------------------------------
@@ -354,6 +356,8 @@ bool SPHSoilRefineMerger::merge_into(int i, const std::vector<int> &members, dou
   for (int k = 0; k < 6; k++) avec->strain_rate[i][k] = values[m++];
   for (int k = 0; k < 3; k++) avec->spin[i][k] = values[m++];
   atom->drho[i] = values[m++] * atom->rho[i];
+  avec->pore_pressure[i] = values[m++];
+  avec->pore_flow[i] = values[m++];
   splitter.return_to_admissible(i);
   avec->smoothing_length[i] = parent_h;
   avec->level[i] = level - 1;

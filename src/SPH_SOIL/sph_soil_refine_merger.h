@@ -36,7 +36,7 @@ class SPHSoilRefineMerger : protected Pointers {
   ~SPHSoilRefineMerger() override;
 
   // the values a merge mass-averages per atom, and the row each atom sends to the ghosts
-  static constexpr int MERGE_VALUES = 6 + 6 + 6 + 6 + 3 + 1;
+  static constexpr int MERGE_VALUES = 6 + 6 + 6 + 6 + 3 + 1 + 2;
   static constexpr int MERGE_ROW = 12 + MERGE_VALUES;
   // the family of an orphan at its level (0: none known, > 0: the parent's ID)
   static constexpr double ORPHAN = -1.0;

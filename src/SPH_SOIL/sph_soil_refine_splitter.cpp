@@ -114,6 +114,7 @@ void SPHSoilRefineSplitter::interpolate(int parent, const double *position,
       f[1 + k] = avec->stress[j][k];
       f[7 + k] = avec->total_strain[j][k];
     }
+    f[13] = avec->pore_pressure[j];
     sum.add(dimension, rmass[j] / rho[j], std::sqrt(r2), h[j], f);
   });
   if (!sum.result(state)) {
@@ -123,6 +124,7 @@ void SPHSoilRefineSplitter::interpolate(int parent, const double *position,
       state[1 + k] = avec->stress[parent][k];
       state[7 + k] = avec->total_strain[parent][k];
     }
+    state[13] = avec->pore_pressure[parent];
   }
 }
 
@@ -298,6 +300,7 @@ void SPHSoilRefineSplitter::set_daughter(int j, const Parent &parent, const doub
     avec->stress[j][c] = state[1 + c];
     avec->total_strain[j][c] = state[7 + c];
   }
+  avec->pore_pressure[j] = state[13];
   // a CSPM average of admissible stresses is admissible for one convex yield surface; the
   // return guards against round-off
   return_to_admissible(j);

@@ -71,8 +71,8 @@ class SPHSoilRefineSplitter : protected Pointers {
   std::vector<tagint> first_new_tags(const std::vector<int> &parents, bigint &total);
 
   // the planned daughters of the parents: per parent n and daughter k, a position and the
-  // interpolated state (density, stress, total strain)
-  static constexpr int NSTATE = 13;
+  // interpolated state (density, stress, total strain, pore pressure)
+  static constexpr int NSTATE = 14;
   struct Daughters {
     int count = 0;    // per parent
     std::vector<double> position, state;

@@ -36,6 +36,7 @@ const std::vector<SPHSoilSet::Keyword> &SPHSoilSet::keywords()
       {"stress", AtomVecSPHSoil::NVOIGT, &SPHSoilSet::set_tensor},
       {"strain", AtomVecSPHSoil::NVOIGT, &SPHSoilSet::set_tensor},
       {"geostatic", 4, &SPHSoilSet::set_geostatic},
+      {"pore_pressure", 1, &SPHSoilSet::set_pore_pressure},
       {"wall", 6, &SPHSoilSet::set_wall},
       {"nowall", 0, &SPHSoilSet::set_nowall},
   };
@@ -155,10 +156,28 @@ int SPHSoilSet::set_tensor(const std::string &keyword, char **args, int)
 }
 
 /* ----------------------------------------------------------------------
-   geostatic surface rho0 g K0 [vertical x|y|z]: sigma_v = rho0 g (v - v_surface) below the
-   surface (0 above), sigma_h = K0 sigma_v; v is y in 2D and z in 3D unless 'vertical' says
-   otherwise. The axis is kept (AtomVecSPHSoil::geostatic_vertical), so that pair_style sph/soil
-   can tell when gravity points along another
+   pore_pressure p: a saturated soil's pore pressure, or a drained wall's (any finite value:
+   suction is negative)
+------------------------------------------------------------------------- */
+
+int SPHSoilSet::set_pore_pressure(const std::string &keyword, char **args, int)
+{
+  const auto values = evaluate(parse_value(keyword, args[0]));
+  check_range(keyword, values, -HUGE_VAL, true, "finite");
+  for (int i = 0; i < atom->nlocal; i++)
+    if (in_group(i)) avec->pore_pressure[i] = values[i];
+  return 0;
+}
+
+/* ----------------------------------------------------------------------
+   geostatic surface rho0 g K0 [vertical x|y|z] [water level rho_w]: sigma_v = rho0 g (v -
+   v_surface) below the surface (0 above), sigma_h = K0 sigma_v; v is y in 2D and z in 3D unless
+   'vertical' says otherwise. With 'water', a water table at `level`: the pore pressure
+   p = rho_w g (level - v) below it (0 above), the weight of free water above the surface added
+   to the total stress, and the stress set is the effective stress, sigma'_v = sigma_v + p,
+   sigma'_h = K0 sigma'_v (doc/theory.rst 7). The axis is kept
+   (AtomVecSPHSoil::geostatic_vertical), so that pair_style sph/soil can tell when gravity
+   points along another
 ------------------------------------------------------------------------- */
 
 int SPHSoilSet::set_geostatic(const std::string &, char **args, int available)
@@ -170,29 +189,55 @@ int SPHSoilSet::set_geostatic(const std::string &, char **args, int available)
   const double k0 = number(FLERR, lmp, "sph_soil/set geostatic K0", args[3],
                            between(0.0, 10.0, false, false));
   int vertical = domain->dimension == 2 ? 1 : 2;
+  bool water = false;
+  double water_level = 0.0, water_density = 0.0;
   int extra = 0;
-  if (available > 4 && strcmp(args[4], "vertical") == 0) {
-    if (available < 6)
-      SPHSoilCompat::error_all(
-          lmp, FLERR, "Illegal sph_soil/set geostatic vertical: needs an axis (x, y or z)");
-    const std::string axis = args[5];
-    vertical = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : -1;
-    if (vertical < 0 || (domain->dimension == 2 && vertical == 2))
-      SPHSoilCompat::error_all(
-          lmp, FLERR,
-          "Illegal sph_soil/set geostatic vertical {}: must be x or y in 2D, x, y "
-          "or z in 3D",
-          axis);
-    extra = 2;
+  // the options, each once, in any order
+  while (available > 4 + extra) {
+    const char *option = args[4 + extra];
+    if (strcmp(option, "vertical") == 0) {
+      if (available < 6 + extra)
+        SPHSoilCompat::error_all(
+            lmp, FLERR, "Illegal sph_soil/set geostatic vertical: needs an axis (x, y or z)");
+      const std::string axis = args[5 + extra];
+      vertical = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : -1;
+      if (vertical < 0 || (domain->dimension == 2 && vertical == 2))
+        SPHSoilCompat::error_all(
+            lmp, FLERR,
+            "Illegal sph_soil/set geostatic vertical {}: must be x or y in 2D, x, y "
+            "or z in 3D",
+            axis);
+      extra += 2;
+    } else if (strcmp(option, "water") == 0 && !water) {
+      if (available < 7 + extra)
+        SPHSoilCompat::error_all(lmp, FLERR,
+                                 "Illegal sph_soil/set geostatic water: needs the water table's "
+                                 "level and the water's density ('water level rho_w')");
+      water = true;
+      water_level = number(FLERR, lmp, "sph_soil/set geostatic water level", args[5 + extra]);
+      water_density = number(FLERR, lmp, "sph_soil/set geostatic water density", args[6 + extra],
+                             above(0.0));
+      extra += 3;
+    } else {
+      break;
+    }
   }
   avec->geostatic_vertical = vertical;
   double **x = atom->x;
+  // free water above the surface weighs on the soil
+  const double water_above = water ? water_density * gravity * MAX(water_level - surface, 0.0) : 0.0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!in_group(i)) continue;
-    const double sv = density * gravity * MIN(x[i][vertical] - surface, 0.0);
+    const double v = x[i][vertical];
+    const double below = MAX(surface - v, 0.0);
+    const double pore = water ? water_density * gravity * MAX(water_level - v, 0.0) : 0.0;
+    // the effective vertical stress (tension positive): the total stress plus the pore pressure
+    // (0 above the surface, where only water, if any, bears on a particle)
+    const double sv = below > 0.0 ? pore - (density * gravity * below + water_above) : 0.0;
     double *stress = avec->stress[i];
     for (int k = 0; k < 3; k++) stress[k] = k == vertical ? sv : k0 * sv;
     for (int k = 3; k < 6; k++) stress[k] = 0.0;
+    if (water) avec->pore_pressure[i] = pore;
   }
   return extra;
 }

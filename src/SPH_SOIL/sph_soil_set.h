@@ -41,6 +41,7 @@ class SPHSoilSet : public Command {
   int set_level(const std::string &keyword, char **args, int available);
   int set_tensor(const std::string &keyword, char **args, int available);
   int set_geostatic(const std::string &keyword, char **args, int available);
+  int set_pore_pressure(const std::string &keyword, char **args, int available);
   int set_wall(const std::string &keyword, char **args, int available);
   int set_nowall(const std::string &keyword, char **args, int available);
 

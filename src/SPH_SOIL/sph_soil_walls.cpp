@@ -232,8 +232,10 @@ struct Extrapolate {
 };
 }    // namespace
 
-void SPHSoilWalls::prepare(double *packed, const NeighbourList &list, KernelKind kernel, int dimension)
+void SPHSoilWalls::prepare(double *packed, const NeighbourList &list, KernelKind kernel, int dimension,
+                           bool stress_itself)
 {
+  packed_stress_itself = stress_itself;
   if (may_turn) comm->forward_comm_array(4, atom->mu);
   if (friction) friction->begin_step();
   if (has_extrapolated) with_kernel(kernel, Extrapolate{this, packed, list, dimension});
@@ -265,6 +267,7 @@ void SPHSoilWalls::extrapolate(double *packed, const NeighbourList &list)
   const int *kind = kind_of_type.data();
   const int newton_pair = force->newton_pair;
   double **stress = avec->stress;
+  const double *pore_pressure = avec->pore_pressure;
   constexpr double SUPPORT2 = Kernel::SUPPORT * Kernel::SUPPORT;
 
   const int *partners = list.partner_data();
@@ -286,7 +289,9 @@ void SPHSoilWalls::extrapolate(double *packed, const NeighbourList &list)
       const double weight = ps[P_VOLUME] * Kernel::value(DIMENSION, sqrt(r2), hij);
       double *sum = sums + (size_t) wall * XSUMS;
       sum[X_WEIGHT] += weight;
-      for (int k = 0; k < 6; k++) sum[X_STRESS + k] += weight * stress[soil][k];
+      // (the total stress: a saturated soil's pore pressure pushes on the wall too)
+      for (int k = 0; k < 3; k++) sum[X_STRESS + k] += weight * (stress[soil][k] - pore_pressure[soil]);
+      for (int k = 3; k < 6; k++) sum[X_STRESS + k] += weight * stress[soil][k];
       sum[X_DENSITY] += weight * ps[P_RHO];
       for (int a = 0; a < DIMENSION; a++) {
         sum[X_HYDROSTATIC + a] += weight * ps[P_RHO] * rw[a];
@@ -326,7 +331,7 @@ template <int DIMENSION> void SPHSoilWalls::extrapolated_states(double *packed)
       hydrostatic += (gravity[a] - acceleration[a]) * sum[X_HYDROSTATIC + a];
     hydrostatic *= inv_weight;
     const double density = sum[X_DENSITY] * inv_weight;
-    const double inv_density2 = 1.0 / (density * density);
+    const double inv_density2 = packed_stress_itself ? 1.0 : 1.0 / (density * density);
     for (int k = 0; k < 6; k++)
       own[W_STRESS + k] = (sum[X_STRESS + k] * inv_weight - (k < 3 ? hydrostatic : 0.0)) * inv_density2;
     for (int a = 0; a < 3; a++)

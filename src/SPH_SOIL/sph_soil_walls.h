@@ -66,8 +66,10 @@ class SPHSoilWalls : protected Pointers {
   // before the pair loop, with the loop's packed rows (soil_packed_rows.h) of the owned and
   // ghost atoms and the pair list: turned normals to the ghosts; the extrapolated walls' state
   // (stress, velocity, density, volume) written into their rows
+  // (`stress_itself`: the packed rows hold the stress, not stress / rho^2: the pair style's
+  // multiphase form)
   void prepare(double *packed, const SPHSoil::NeighbourList &list, SPHSoil::KernelKind kernel,
-               int dimension);
+               int dimension, bool stress_itself);
 
   // the Coulomb interface of frictional walls (sph_soil_wall_friction.h), nullptr if none;
   // the pair loop adds its pairs to it
@@ -112,6 +114,7 @@ class SPHSoilWalls : protected Pointers {
   int nmax;
   double *sums, *state;
   template <int DIMENSION> void extrapolated_states(double *packed);
+  bool packed_stress_itself = false;    // prepare()'s
 };
 
 }    // namespace LAMMPS_NS

@@ -64,6 +64,27 @@ inline std::vector<std::string> periodic_patch_commands(const std::string &disor
   return commands;
 }
 
+// The periodic patch (periodic_patch_commands()) as saturated soil below y = 8 cm (type 1, group
+// soil, its pore pressure varying so that the pore water flows) and free water above it (type 2,
+// group water, at rest at its reference density), with pair_style sph/soil and both materials;
+// no integrator, no velocity
+inline std::vector<std::string> soil_and_water_patch_commands()
+{
+  auto commands = periodic_patch_commands();
+  for (auto &line : commands)
+    if (line == "create_box 1 box") line = "create_box 2 box";
+  const std::vector<std::string> water = {
+      "region upper block INF INF 8 INF INF INF", "set region upper type 2", "group water type 2",
+      "group soil type 1", "variable pore atom 300.0+100.0*sin(400*x)*cos(300*y)",
+      "sph_soil/set soil pore_pressure v_pore",
+      "sph_soil/set water density 1000 mass 0.1 stress 0 0 0 0 0 0", "pair_style sph/soil",
+      "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 porosity 0.4 permeability 1e-4 "
+      "water_modulus 2e7",
+      "pair_coeff 2 2 water 1000 2e6"};
+  commands.insert(commands.end(), water.begin(), water.end());
+  return commands;
+}
+
 // A 0.1 m x 0.1 m 2D column of soil particles (type 1, 4 mm spacing, h 4.8 mm, rho 1850) in a
 // box of wall particles (type 2: groups floor, left, right, with their planes), no pair style
 inline const std::vector<std::string> &walled_column_commands()
@@ -106,6 +127,7 @@ inline LAMMPS_NS::AtomVecSPHSoil *soil_avec(LAMMPS_NS::LAMMPS *lmp)
 
 // Every per-atom state value of atom_style sph/soil, in a fixed order, for atom i.
 // Order: type x(3) v(3) mass h rho level stress(6) strain(6) wall_normal(3) wall_distance vest(3)
+// pore_pressure
 inline std::vector<double> atom_state(LAMMPS_NS::LAMMPS *lmp, int i)
 {
   auto atom = lmp->atom;
@@ -123,6 +145,7 @@ inline std::vector<double> atom_state(LAMMPS_NS::LAMMPS *lmp, int i)
   for (int k = 0; k < 3; k++) s.push_back(avec->wall_normal[i][k]);
   s.push_back(avec->wall_distance[i]);
   for (int k = 0; k < 3; k++) s.push_back(atom->vest[i][k]);
+  s.push_back(avec->pore_pressure[i]);
   return s;
 }
 inline const std::vector<std::string> &state_names()
@@ -130,7 +153,7 @@ inline const std::vector<std::string> &state_names()
   static const std::vector<std::string> names = {
       "type", "x", "y", "z", "vx", "vy", "vz", "mass", "h", "rho", "level",
       "sxx", "syy", "szz", "sxy", "sxz", "syz", "exx", "eyy", "ezz", "exy", "exz", "eyz",
-      "wall_nx", "wall_ny", "wall_nz", "wall_d", "vestx", "vesty", "vestz"};
+      "wall_nx", "wall_ny", "wall_nz", "wall_d", "vestx", "vesty", "vestz", "pore_pressure"};
   return names;
 }
 

@@ -1,0 +1,89 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package: the pore water of a saturated soil (pure, no LAMMPS)
+------------------------------------------------------------------------- */
+
+#include "soil_pore_water.h"
+
+#include "soil_numbers.h"
+
+#include <cmath>
+
+using namespace SPHSoil;
+
+constexpr double PoreWater::DEFAULT_DENSITY;
+constexpr double PoreWater::DEFAULT_MODULUS;
+constexpr const char *PoreWater::KEYWORDS;
+
+namespace {
+
+struct Keyword {
+  const char *name;
+  double PoreWater::*field;
+  double low;        // the allowed range: (low, high) or [low, high) as low_open says
+  bool low_open;
+  double high;       // < 0: no upper bound
+  const char *range;
+};
+
+const Keyword KEYWORD_TABLE[] = {
+    {"porosity", &PoreWater::porosity, 0.0, true, 1.0, "in (0, 1)"},
+    {"permeability", &PoreWater::conductivity, 0.0, false, -1.0, ">= 0 (hydraulic conductivity, m/s)"},
+    {"water_density", &PoreWater::water_density, 0.0, true, -1.0, "> 0 (kg/m^3)"},
+    {"water_modulus", &PoreWater::water_modulus, 0.0, true, -1.0, "> 0 (Pa)"},
+};
+
+}    // namespace
+
+bool PoreWater::from_words(std::vector<std::string> &words, PoreWater &water, bool &found,
+                           std::string &error)
+{
+  water = PoreWater();
+  found = false;
+  bool given[sizeof(KEYWORD_TABLE) / sizeof(KEYWORD_TABLE[0])] = {};
+  std::vector<std::string> rest;
+  for (size_t k = 0; k < words.size(); k++) {
+    int which = -1;
+    for (int w = 0; w < (int) (sizeof(KEYWORD_TABLE) / sizeof(KEYWORD_TABLE[0])); w++)
+      if (words[k] == KEYWORD_TABLE[w].name) which = w;
+    if (which < 0) {
+      rest.push_back(words[k]);
+      continue;
+    }
+    const Keyword &keyword = KEYWORD_TABLE[which];
+    found = true;
+    if (given[which]) {
+      error = std::string("pore water ") + keyword.name + " given twice";
+      return false;
+    }
+    given[which] = true;
+    if (k + 1 >= words.size()) {
+      error = std::string("pore water ") + keyword.name + " needs a value " + keyword.range;
+      return false;
+    }
+    const std::string &text = words[++k];
+    double value = 0.0;
+    if (!parse_finite_number(text, value) ||
+        !(keyword.low_open ? value > keyword.low : value >= keyword.low) ||
+        (keyword.high >= 0.0 && !(value < keyword.high))) {
+      error = std::string("pore water ") + keyword.name + " = " + text + " must be finite and " +
+          keyword.range;
+      return false;
+    }
+    water.*(keyword.field) = value;
+  }
+  if (found && !(given[0] && given[1])) {
+    error = std::string("a saturated soil needs both porosity and permeability (missing: ") +
+        (given[0] ? "permeability" : "porosity") + ")";
+    return false;
+  }
+  words = rest;
+  return true;
+}
+
+std::string PoreWater::check_density(double saturated_density) const
+{
+  if (saturated_density > porosity * water_density) return "";
+  return "the saturated density rho0 = " + format_number(saturated_density) +
+      " must exceed porosity * water_density = " + format_number(porosity * water_density) +
+      " (rho0 of a saturated soil is the mass of grains and water per volume)";
+}

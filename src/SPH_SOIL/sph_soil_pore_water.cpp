@@ -1,0 +1,208 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package for LAMMPS: the pore water of pair_style sph/soil (see the header)
+------------------------------------------------------------------------- */
+
+#include "sph_soil_pore_water.h"
+
+#include "atom.h"
+#include "atom_vec_sph_soil.h"
+#include "comm.h"
+#include "force.h"
+#include "pair.h"
+#include "soil_packed_rows.h"
+#include "soil_pore_water.h"
+#include "sph_soil_compat.h"
+#include "sph_soil_fixes.h"
+#include "sph_soil_offenders.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace SPHSoil;
+
+constexpr double SPHSoilPoreWater::DRAINED;
+
+SPHSoilPoreWater::SPHSoilPoreWater(LAMMPS *lmp, Pair *owner) :
+    Pointers(lmp), owner(owner), avec(nullptr), saturated(false), water(false), exchange(NONE)
+{
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHSoilPoreWater::init(const std::vector<SoilMaterial> &materials,
+                            const std::vector<int> &has_material)
+{
+  avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  const int ntypes = (int) materials.size() - 1;
+  mobility_of_type.assign(ntypes + 1, 0.0);
+  water_density_of_type.assign(ntypes + 1, 0.0);
+  saturated = water = false;
+  int first_saturated = 0;
+  for (int t = 1; t <= ntypes; t++) {
+    if (!has_material[t]) continue;
+    const SoilMaterial &m = materials[t];
+    // a drained wall and free water: the pressure of the water the soil drains into
+    if (m.is_wall() || m.water) {
+      if (m.drained || m.water) mobility_of_type[t] = DRAINED;
+      water = water || m.water;
+      continue;
+    }
+    if (!m.saturated) continue;
+    mobility_of_type[t] = m.pore_water.mobility();
+    water_density_of_type[t] = m.pore_water.water_density;
+    if (!saturated) first_saturated = t;
+    saturated = true;
+    // two saturated soils hold two waters: legal (layers of other fluids), most likely a typo
+    if (m.pore_water.water_density != water_density_of_type[first_saturated] && comm->me == 0)
+      error->warning(FLERR,
+                     "Pair sph/soil: the saturated soils of types {} and {} have pore water of "
+                     "densities {} and {}; the flow between them takes their mean",
+                     first_saturated, t, water_density_of_type[first_saturated],
+                     m.pore_water.water_density);
+  }
+  // a hydraulic conductivity is measured under the standard gravity g_n = 9.80665 m/s^2
+  if (saturated && strcmp(update->unit_style, "si") != 0)
+    SPHSoilCompat::error_all(lmp, FLERR,
+                             "Pair sph/soil: the saturated soil of type {} needs 'units si' (its "
+                             "permeability is a hydraulic conductivity in m/s, measured under the "
+                             "standard gravity 9.80665 m/s^2), got units {}",
+                             first_saturated, update->unit_style);
+  gravity_fixes = SPHSoilFixes::gravity_fixes(lmp);
+
+  // a pore pressure on dry soil would enter its total stress and never change
+  const int *type = atom->type;
+  const double *pressure = avec->pore_pressure;
+  const auto dry = SPHSoilOffenders::find_offenders(
+      lmp,
+      [&](int i) {
+        const int t = type[i];
+        return has_material[t] && !materials[t].is_wall() && !materials[t].saturated &&
+            !materials[t].water && pressure[i] != 0.0;
+      },
+      [&](int i, double *values) {
+        values[0] = pressure[i];
+        values[1] = type[i];
+      });
+  if (dry)
+    SPHSoilCompat::error_all(lmp, FLERR,
+                             "Pair sph/soil: {} particle(s) of dry soil carry a pore pressure (atom "
+                             "{} of type {}: {}); only a saturated soil (a material with porosity "
+                             "and permeability) or a drained wall has one: set it to 0 with "
+                             "'sph_soil/set <group> pore_pressure 0'",
+                             dry.count, dry.first, (int) dry.values[1], dry.values[0]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void SPHSoilPoreWater::share_pressures()
+{
+  exchange = PRESSURE;
+  SPHSoilCompat::forward_comm_pair(comm, owner);
+  exchange = NONE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+namespace {
+struct Flow {
+  SPHSoilPoreWater *water;
+  const double *packed;
+  const NeighbourList &list;
+  int dimension;
+  template <class Kernel> void operator()() const
+  {
+    if (dimension == 2) water->flow_sums<2, Kernel>(packed, list);
+    else water->flow_sums<3, Kernel>(packed, list);
+  }
+};
+}    // namespace
+
+void SPHSoilPoreWater::flow(const double *packed, const NeighbourList &list, KernelKind kernel,
+                            int dimension)
+{
+  with_kernel(kernel, Flow{this, packed, list, dimension});
+  if (force->newton_pair) {
+    exchange = FLOW;
+    SPHSoilCompat::reverse_comm_pair(comm, owner);
+    exchange = NONE;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   every pair of a saturated soil particle and a saturated soil or drained wall partner, with
+   the partners' volumes (soil_pore_water.h): each pair once, its shares to both (the water
+   volume leaving one enters the other). Mirror and extrapolated walls alike: a drained wall
+   particle holds the pressure of the water behind it, the others no water.
+------------------------------------------------------------------------- */
+
+template <int DIMENSION, class Kernel>
+void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list)
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int newton_pair = force->newton_pair;
+  const int *type = atom->type;
+  const double *pressure = avec->pore_pressure;
+  double *flow = avec->pore_flow;
+  memset(flow, 0, sizeof(double) * (newton_pair ? nall : nlocal));
+  const double *mobility = mobility_of_type.data();
+  const double *water_density = water_density_of_type.data();
+  double gravity[3];
+  SPHSoilFixes::gravity_sum(gravity_fixes, gravity);
+  const int *partners = list.partner_data();
+
+  for (int i = 0; i < nlocal; i++) {
+    const double lambda_i = mobility[type[i]];
+    if (lambda_i == 0.0) continue;
+    const double *pi = packed + (size_t) i * PACKED;
+    for (int jj = list.first(i); jj < list.end(i); jj++) {
+      const int j = partners[jj];
+      const double lambda_j = mobility[type[j]];
+      double lambda_ij, rho_w;
+      if (lambda_i > 0.0 && lambda_j > 0.0) {
+        lambda_ij = harmonic_mobility(lambda_i, lambda_j);
+        rho_w = 0.5 * (water_density[type[i]] + water_density[type[j]]);
+      } else if (lambda_i > 0.0 && lambda_j == DRAINED) {
+        lambda_ij = 2.0 * lambda_i;
+        rho_w = water_density[type[i]];
+      } else if (lambda_i == DRAINED && lambda_j > 0.0) {
+        lambda_ij = 2.0 * lambda_j;
+        rho_w = water_density[type[j]];
+      } else {
+        continue;
+      }
+      const double *pj = packed + (size_t) j * PACKED;
+      PairGeometry g;
+      if (!pair_geometry<DIMENSION, Kernel>(pi + P_X, pi[P_H], pj, g)) continue;
+      const double term = pore_flow<DIMENSION>(pressure[i], pressure[j], rho_w, gravity, g.dx, g.r2,
+                                               g.hij, g.factor, lambda_ij);
+      if (lambda_i > 0.0) flow[i] += pj[P_VOLUME] * term;
+      if (lambda_j > 0.0 && (newton_pair || j < nlocal)) flow[j] -= pi[P_VOLUME] * term;
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int SPHSoilPoreWater::pack_forward_comm(int n, int *list, double *buf)
+{
+  for (int k = 0; k < n; k++) buf[k] = avec->pore_pressure[list[k]];
+  return n;
+}
+
+void SPHSoilPoreWater::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; k++) avec->pore_pressure[first + k] = buf[k];
+}
+
+int SPHSoilPoreWater::pack_reverse_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; k++) buf[k] = avec->pore_flow[first + k];
+  return n;
+}
+
+void SPHSoilPoreWater::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  for (int k = 0; k < n; k++) avec->pore_flow[list[k]] += buf[k];
+}

