@@ -43,6 +43,8 @@ from sph_soil.runner import Lammps, add_lmp_argument  # noqa: E402
 # tension (the loop with the artificial stress)
 STYLES = {'sph_soil': ('in.bench_sph_soil', []),
           'sph_soil_cohesive': ('in.bench_sph_soil', ['-var', 'cohesion', '1.0e5']),
+          'sph_soil_saturated': ('in.bench_sph_soil', ['-var', 'material', 'saturated']),
+          'sph_soil_water': ('in.bench_sph_soil', ['-var', 'material', 'water']),
           'sph_taitwater': ('in.bench_taitwater', []), 'smd_ulsph': ('in.bench_ulsph', [])}
 
 
