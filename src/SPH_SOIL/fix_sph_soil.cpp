@@ -50,7 +50,8 @@ constexpr double BIG = 1.0e30;
 FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), cfl(0.0), stable_cfl(0.2), max_dt(0.0), max_diffusivity(0.0),
     diffusion_bound(false), avec(nullptr), pair(nullptr),
-    yielded_count(0), nstate(NSTATE_GLOBAL), integrator_state(nullptr), restore_pending(false)
+    yielded_count(0), nstate(NSTATE_GLOBAL), integrator_state(nullptr), pressures(false),
+    restore_pending(false)
 {
   time_integrate = 1;
   restart_global = 1;
@@ -138,6 +139,7 @@ void FixSPHSoil::init()
   density_floor_of_type.assign(atom->ntypes + 1, 0.0);
   storage_of_type.assign(atom->ntypes + 1, 0.0);
   water_modulus_of_type.assign(atom->ntypes + 1, 0.0);
+  pressures = false;
   max_diffusivity = 0.0;
   for (int type = 1; type <= atom->ntypes; type++) {
     model_of_type[type] = pair->model(type);
@@ -145,6 +147,7 @@ void FixSPHSoil::init()
     const auto &material = pair->material(type);
     density_floor_of_type[type] = SPHSoil::DENSITY_FLOOR * material.density;
     if (material.water) water_modulus_of_type[type] = material.model->p_wave_modulus();
+    pressures = pressures || material.water || material.saturated;
     if (material.saturated) {
       storage_of_type[type] = material.pore_water.storage_modulus();
       max_diffusivity = MAX(max_diffusivity, material.pore_water.diffusivity());
@@ -259,8 +262,20 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
       if (integrated(i) && avec->saved_rates[i][AtomVecSPHSoil::SAVED_FLAG] != 0.0) restore_rates(i);
     restore_pending = false;
   }
-  if (schedule.per_level) return initial_integrate_levels();
+  // (runs without pore water or free water: the loops without their branches)
+  if (schedule.per_level) {
+    if (pressures) return initial_integrate_levels<true>();
+    return initial_integrate_levels<false>();
+  }
+  if (pressures) return initial_integrate_global<true>();
+  initial_integrate_global<false>();
+}
 
+template <bool PRESSURES> void FixSPHSoil::initial_integrate_global()
+{
+  double **x = atom->x, **v = atom->v, **f = atom->f, **vest = atom->vest;
+  double *rmass = atom->rmass;
+  const int nlocal = atom->nlocal;
   int first_unstable = -1, first_outside = -1;
   double lo[3], hi[3];
   box_limits(lo, hi);
@@ -273,8 +288,8 @@ void FixSPHSoil::initial_integrate(int /*vflag*/)
       v[i][a] += dtfm * f[i][a];
       x[i][a] += dtv * v[i][a];
     }
-    predict(i, dtv);
-    water_pressure(i);
+    predict<PRESSURES>(i, dtv);
+    if (PRESSURES) water_pressure(i);
     check_position(i, lo, hi, first_unstable, first_outside);
   }
   stop_if_unstable(first_unstable);
@@ -340,14 +355,14 @@ void FixSPHSoil::stop_if_left_box(int first_outside)
 void FixSPHSoil::final_integrate()
 {
   if (schedule.per_level)
-    kick_and_correct<true>();
+    pressures ? kick_and_correct<true, true>() : kick_and_correct<true, false>();
   else
-    kick_and_correct<false>();
+    pressures ? kick_and_correct<false, true>() : kick_and_correct<false, false>();
 }
 
 // the second kick for all; the corrector for every particle (one global step) or for those
 // whose own step ends now (a time step per level, soil_level_steps.h)
-template <bool LEVELS> void FixSPHSoil::kick_and_correct()
+template <bool LEVELS, bool PRESSURES> void FixSPHSoil::kick_and_correct()
 {
   double **v = atom->v, **f = atom->f;
   const double *rmass = atom->rmass;
@@ -361,12 +376,13 @@ template <bool LEVELS> void FixSPHSoil::kick_and_correct()
     const double dtfm = dtf / rmass[i];
     for (int a = 0; a < 3; a++) v[i][a] += dtfm * f[i][a];
     if (!LEVELS) {
-      if (correct(i, dtf)) yielded++;
+      if (correct<PRESSURES>(i, dtf)) yielded++;
     } else {
       const double *s = integrator_state[i];
-      if (now == s[STEP_END] && correct(i, 0.5 * (s[STEP_END] - s[STEP_BEGIN]) * dtv)) yielded++;
+      if (now == s[STEP_END] && correct<PRESSURES>(i, 0.5 * (s[STEP_END] - s[STEP_BEGIN]) * dtv))
+        yielded++;
     }
-    water_pressure(i);
+    if (PRESSURES) water_pressure(i);
     if (unstable(i) && lower_id(i, first_unstable)) first_unstable = i;
   }
   yielded_count = yielded;
@@ -380,7 +396,7 @@ template <bool LEVELS> void FixSPHSoil::kick_and_correct()
    (doc/theory.rst 4.1): positive whatever the rate
 ------------------------------------------------------------------------- */
 
-SPH_SOIL_INLINE void FixSPHSoil::predict(int i, double step)
+template <bool PRESSURES> SPH_SOIL_INLINE void FixSPHSoil::predict(int i, double step)
 {
   double *rho = atom->rho;
   double *old = integrator_state[i];
@@ -392,7 +408,7 @@ SPH_SOIL_INLINE void FixSPHSoil::predict(int i, double step)
     avec->total_strain[i][k] += step * avec->strain_rate[i][k];
     avec->stress[i][k] += step * avec->stress_rate[i][k];
   }
-  if (storage_of_type[atom->type[i]] > 0.0) {
+  if (PRESSURES && storage_of_type[atom->type[i]] > 0.0) {
     old[HEUN_PORE_RATE] = pore_pressure_rate(i);
     avec->pore_pressure[i] += step * old[HEUN_PORE_RATE];
   }
@@ -419,7 +435,7 @@ SPH_SOIL_INLINE double FixSPHSoil::pore_pressure_rate(int i) const
 
 // Heun corrector: y(t + dt) = y(t) + dt/2 (rate(t) + rate(t + dt)), the predictor having made
 // the full step with rate(t)
-SPH_SOIL_INLINE bool FixSPHSoil::correct(int i, double half_step)
+template <bool PRESSURES> SPH_SOIL_INLINE bool FixSPHSoil::correct(int i, double half_step)
 {
   double *rho = atom->rho;
   const double *old = integrator_state[i];
@@ -427,7 +443,7 @@ SPH_SOIL_INLINE bool FixSPHSoil::correct(int i, double half_step)
                     density_floor_of_type[atom->type[i]]);
   for (int k = 0; k < 6; k++)
     avec->total_strain[i][k] += half_step * (avec->strain_rate[i][k] - old[HEUN_STRAIN_RATE + k]);
-  if (storage_of_type[atom->type[i]] > 0.0)
+  if (PRESSURES && storage_of_type[atom->type[i]] > 0.0)
     avec->pore_pressure[i] += half_step * (pore_pressure_rate(i) - old[HEUN_PORE_RATE]);
 
   const auto model = model_of_type[atom->type[i]];
@@ -450,7 +466,7 @@ SPH_SOIL_INLINE bool FixSPHSoil::correct(int i, double half_step)
    for the step's end; the others show their partners the state interpolated to `now`.
 ------------------------------------------------------------------------- */
 
-void FixSPHSoil::initial_integrate_levels()
+template <bool PRESSURES> void FixSPHSoil::initial_integrate_levels()
 {
   double **x = atom->x, **v = atom->v, **f = atom->f, **vest = atom->vest;
   double **stress = avec->stress;
@@ -489,7 +505,7 @@ void FixSPHSoil::initial_integrate_levels()
           s[BEGIN_VELOCITY + a] = v_start[a];
           vest[i][a] = v_start[a] + 2.0 * dtfm * f[i][a];
         }
-        predict(i, duration);
+        predict<PRESSURES>(i, duration);
       } else {
         // the mean acceleration of the step that ended now (the velocity's change over it,
         // every kick included); a particle without one: its forces of now, spread over its step
@@ -501,17 +517,19 @@ void FixSPHSoil::initial_integrate_levels()
           vest[i][a] = v_start[a] + dtv * s[MEAN_ACCELERATION + a];
         }
         s[STEP_DURATION] = duration;
-        const double begin_rho = rho[i], begin_pore = pore[i];
+        const double begin_rho = rho[i], begin_pore = PRESSURES ? pore[i] : 0.0;
         double begin_stress[6];
         for (int k = 0; k < 6; k++) begin_stress[k] = stress[i][k];
-        predict(i, duration);
+        predict<PRESSURES>(i, duration);
         // partners see the state interpolated between the start and the prediction
         s[END_RHO] = rho[i];
         s[RHO_INCREMENT] = (rho[i] - begin_rho) / length;
         rho[i] = begin_rho + s[RHO_INCREMENT];
-        s[END_PORE] = pore[i];
-        s[PORE_INCREMENT] = (pore[i] - begin_pore) / length;
-        pore[i] = begin_pore + s[PORE_INCREMENT];
+        if (PRESSURES) {
+          s[END_PORE] = pore[i];
+          s[PORE_INCREMENT] = (pore[i] - begin_pore) / length;
+          pore[i] = begin_pore + s[PORE_INCREMENT];
+        }
         for (int k = 0; k < 6; k++) {
           s[END_STRESS + k] = stress[i][k];
           s[STRESS_INCREMENT + k] = (stress[i][k] - begin_stress[k]) / length;
@@ -521,16 +539,16 @@ void FixSPHSoil::initial_integrate_levels()
     } else if (ends == s[STEP_END]) {
       // the step's last time step: exactly the predictor's state, for the corrector
       rho[i] = s[END_RHO];
-      pore[i] = s[END_PORE];
+      if (PRESSURES) pore[i] = s[END_PORE];
       for (int k = 0; k < 6; k++) stress[i][k] = s[END_STRESS + k];
       for (int a = 0; a < 3; a++) vest[i][a] += dtv * s[MEAN_ACCELERATION + a];
     } else {
       rho[i] += s[RHO_INCREMENT];
-      pore[i] += s[PORE_INCREMENT];
+      if (PRESSURES) pore[i] += s[PORE_INCREMENT];
       for (int k = 0; k < 6; k++) stress[i][k] += s[STRESS_INCREMENT + k];
       for (int a = 0; a < 3; a++) vest[i][a] += dtv * s[MEAN_ACCELERATION + a];
     }
-    water_pressure(i);
+    if (PRESSURES) water_pressure(i);
     check_position(i, lo, hi, first_unstable, first_outside);
   }
   stop_if_unstable(first_unstable);
@@ -837,6 +855,7 @@ void FixSPHSoil::restart(char *buf)
 
 // (a definition for C++11, where LAMMPS 29Sep2021 compiles: the value is passed by reference)
 constexpr int FixSPHSoil::RESTART_FORMAT;
+constexpr double FixSPHSoil::DIFFUSION_NUMBER;
 
 double FixSPHSoil::memory_usage()
 {

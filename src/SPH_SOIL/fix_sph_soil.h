@@ -133,10 +133,14 @@ class FixSPHSoil : public Fix {
   // the Heun predictor over a step of `step` (a full step with the rates of its start, which
   // the corrector keeps), and the corrector with half that step; true if the corrected stress
   // was returned to the yield surface
-  void predict(int i, double step);
-  bool correct(int i, double half_step);
-  void initial_integrate_levels();
-  template <bool LEVELS> void kick_and_correct();
+  // (PRESSURES: some type is a saturated soil or free water, whose pressures the integrator steps
+  // or sets; the loops of runs without are compiled without those branches)
+  template <bool PRESSURES> void predict(int i, double step);
+  template <bool PRESSURES> bool correct(int i, double half_step);
+  template <bool PRESSURES> void initial_integrate_global();
+  template <bool PRESSURES> void initial_integrate_levels();
+  template <bool LEVELS, bool PRESSURES> void kick_and_correct();
+  bool pressures;
   // the hierarchy from the smallest and largest h (collective)
   void update_schedule(double min_h, double max_h);
   bool restore_pending;    // at the first step of a run: restore the saved rates
