@@ -488,8 +488,8 @@ std::vector<BadInput> cases()
         "compute c all sph/soil/atom", "Compute sph/soil/atom requires atom_style sph/soil");
   error("ComputeUnknownValue", "patch", {}, "compute c all sph/soil/atom stress",
         "Illegal compute sph/soil/atom value stress (allowed: sxx syy szz sxy sxz syz pressure "
-        "pore_pressure total_sxx total_syy total_szz sqrtJ2 strain yielded density h level neighbours "
-        "shear_strain shear_strain_rate step_period)");
+        "pore_pressure total_sxx total_syy total_szz drained_inflow sqrtJ2 strain yielded density h "
+        "level neighbours shear_strain shear_strain_rate step_period)");
 
   // ---- data files (the rank that reads the atom raises the error)
   data("DataMassNegative", "1 1 -1.0 0.1 1000 0 0.5 0.5 0", "",

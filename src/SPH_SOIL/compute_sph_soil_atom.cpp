@@ -50,6 +50,9 @@ const std::vector<ComputeSPHSoilAtom::Value> &ComputeSPHSoilAtom::values()
       {{"total_sxx"}, nullptr, [](const Source &s, int i) { return total_normal_stress(s, i, 0); }},
       {{"total_syy"}, nullptr, [](const Source &s, int i) { return total_normal_stress(s, i, 1); }},
       {{"total_szz"}, nullptr, [](const Source &s, int i) { return total_normal_stress(s, i, 2); }},
+      // the pore water it took in from drained walls and free water at the last step (m^3/s; m^2/s
+      // per unit depth in 2D): compute reduce sum over a boundary's soil gives the flux through it
+      {{"drained_inflow"}, LIST, [](const Source &s, int i) { return s.pair->drained_inflow(i); }},
       {{"sqrtJ2"}, nullptr, [](const Source &s, int i) { return SPHSoil::sqrt_j2(s.avec->stress[i]); }},
       {{"strain"}, nullptr,
        [](const Source &s, int i) { return SPHSoil::strain_measure(s.avec->total_strain[i]); }},

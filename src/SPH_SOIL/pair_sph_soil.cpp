@@ -327,6 +327,11 @@ void *PairSPHSoil::extract(const char *name, int &dim)
   return nullptr;
 }
 
+double PairSPHSoil::drained_inflow(int i) const
+{
+  return pore_water->drained_inflow(i);
+}
+
 /* ----------------------------------------------------------------------
    the communication belongs to the pore water while it sends, else to the walls
 ------------------------------------------------------------------------- */

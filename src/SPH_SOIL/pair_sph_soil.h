@@ -74,6 +74,8 @@ class PairSPHSoil : public Pair {
   // soil particles behind the plane of a mirror wall they pair with, on all ranks (collective):
   // a diagnosis of an instability
   bigint soil_behind_walls() const;
+  // the pore water that owned atom i took in from drained partners (sph_soil_pore_water.h)
+  double drained_inflow(int i) const;
   // whether the pair loop adds the artificial stress (known after init)
   bool artificial_stress_active() const { return has_artificial_stress; }
 

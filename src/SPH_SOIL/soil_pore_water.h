@@ -69,7 +69,9 @@ struct PoreWater {
    with grad_a W = factor x_ab; b gets V_a times the same with the opposite sign (the water
    leaving a enters b: volume conserved pair by pair). lambda_ab: the harmonic mean of the two
    mobilities (the conductance of two layers in series); a drained partner (free water, a drained
-   wall) has an infinite one, the limit 2 lambda_a.
+   wall) has an infinite one, the limit 2 lambda_a (doc/theory.rst 7.3: the flux through a layer
+   follows Darcy's law within 1.2% at two spacings, where the soil's own lambda_a gave 3-6% too
+   little)
 ------------------------------------------------------------------------- */
 
 inline double harmonic_mobility(double lambda_a, double lambda_b)

@@ -131,7 +131,8 @@ void SPHSoilPoreWater::flow(const double *packed, const NeighbourList &list, Ker
 }
 
 /* ----------------------------------------------------------------------
-   every pair of a saturated soil particle and a saturated soil or drained wall partner, with
+   every pair of a saturated soil particle and a saturated soil or drained partner (a drained
+   wall, free water: the soil's conductance alone, soil_pore_water.h), with
    the partners' volumes (soil_pore_water.h): each pair once, its shares to both (the water
    volume leaving one enters the other). Mirror and extrapolated walls alike: a drained wall
    particle holds the pressure of the water behind it, the others no water.
@@ -146,6 +147,7 @@ void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list
   const double *pressure = avec->pore_pressure;
   double *flow = avec->pore_flow;
   memset(flow, 0, sizeof(double) * (newton_pair ? nall : nlocal));
+  inflow.assign(nlocal, 0.0);
   const double *mobility = mobility_of_type.data();
   const double *water_density = water_density_of_type.data();
   double gravity[3];
@@ -179,6 +181,9 @@ void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list
                                                g.hij, g.factor, lambda_ij);
       if (lambda_i > 0.0) flow[i] += pj[P_VOLUME] * term;
       if (lambda_j > 0.0 && (newton_pair || j < nlocal)) flow[j] -= pi[P_VOLUME] * term;
+      // (the water taken from a drained partner: each side's owner counts its own)
+      if (lambda_j == DRAINED) inflow[i] += pi[P_VOLUME] * pj[P_VOLUME] * term;
+      else if (lambda_i == DRAINED && j < nlocal) inflow[j] -= pi[P_VOLUME] * pj[P_VOLUME] * term;
     }
   }
 }

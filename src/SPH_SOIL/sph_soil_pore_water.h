@@ -24,6 +24,7 @@
 
 #include <vector>
 
+
 namespace LAMMPS_NS {
 
 class SPHSoilPoreWater : protected Pointers {
@@ -49,6 +50,14 @@ class SPHSoilPoreWater : protected Pointers {
   template <int DIMENSION, class Kernel>
   void flow_sums(const double *packed, const SPHSoil::NeighbourList &list);
 
+  // the pore water volume per unit time that owned atom i took in from drained partners (drained
+  // walls, free water) at the last evaluation, negative where it drained into them: summed over
+  // a boundary's soil, the flux through it (m^3/s, per unit depth in 2D). 0 without flow
+  double drained_inflow(int i) const
+  {
+    return saturated && i < (int) inflow.size() ? inflow[i] : 0.0;
+  }
+
   // the pair style's communication, while this unit uses it
   bool communicating() const { return exchange != NONE; }
   int pack_forward_comm(int n, int *list, double *buf);
@@ -56,7 +65,7 @@ class SPHSoilPoreWater : protected Pointers {
   int pack_reverse_comm(int n, int first, double *buf);
   void unpack_reverse_comm(int n, int *list, double *buf);
 
-  // a drained wall's mobility: infinite, the pair's conductance is the soil's alone
+  // a drained partner's mark: an infinite mobility, the pair's conductance is the soil's alone
   static constexpr double DRAINED = -1.0;
 
  private:
@@ -67,6 +76,7 @@ class SPHSoilPoreWater : protected Pointers {
   std::vector<double> mobility_of_type;         // k / gamma_w; DRAINED; 0: no pore water
   std::vector<double> water_density_of_type;    // rho_w of a saturated soil
   std::vector<class Fix *> gravity_fixes;       // their 'gvec': the water's weight
+  std::vector<double> inflow;                   // drained_inflow() of the owned atoms
 };
 
 }    // namespace LAMMPS_NS
