@@ -12,7 +12,6 @@ using namespace SPHSoil;
 
 constexpr double PoreWater::DEFAULT_DENSITY;
 constexpr double PoreWater::DEFAULT_MODULUS;
-constexpr const char *PoreWater::KEYWORDS;
 
 namespace {
 
@@ -31,6 +30,7 @@ const Keyword KEYWORD_TABLE[] = {
     {"water_density", &PoreWater::water_density, 0.0, true, -1.0, "> 0 (kg/m^3)"},
     {"water_modulus", &PoreWater::water_modulus, 0.0, true, -1.0, "> 0 (Pa)"},
 };
+constexpr int NKEYWORDS = sizeof(KEYWORD_TABLE) / sizeof(KEYWORD_TABLE[0]);
 
 }    // namespace
 
@@ -39,11 +39,11 @@ bool PoreWater::from_words(std::vector<std::string> &words, PoreWater &water, bo
 {
   water = PoreWater();
   found = false;
-  bool given[sizeof(KEYWORD_TABLE) / sizeof(KEYWORD_TABLE[0])] = {};
+  bool given[NKEYWORDS] = {};
   std::vector<std::string> rest;
   for (size_t k = 0; k < words.size(); k++) {
     int which = -1;
-    for (int w = 0; w < (int) (sizeof(KEYWORD_TABLE) / sizeof(KEYWORD_TABLE[0])); w++)
+    for (int w = 0; w < NKEYWORDS; w++)
       if (words[k] == KEYWORD_TABLE[w].name) which = w;
     if (which < 0) {
       rest.push_back(words[k]);
@@ -71,6 +71,7 @@ bool PoreWater::from_words(std::vector<std::string> &words, PoreWater &water, bo
     }
     water.*(keyword.field) = value;
   }
+  // (the table's first two: porosity and permeability, both needed)
   if (found && !(given[0] && given[1])) {
     error = std::string("a saturated soil needs both porosity and permeability (missing: ") +
         (given[0] ? "permeability" : "porosity") + ")";

@@ -58,8 +58,6 @@ struct PoreWater {
   {
     return (saturated_density - porosity * water_density) / (1.0 - porosity);
   }
-  // the keywords, for messages
-  static constexpr const char *KEYWORDS = "porosity, permeability, water_density, water_modulus";
 };
 
 /* ----------------------------------------------------------------------
