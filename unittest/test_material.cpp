@@ -20,6 +20,15 @@ const DruckerPragerParameters &drucker_prager(const SoilMaterial &material)
 {
   return dynamic_cast<const DruckerPrager &>(*material.model).parameters();
 }
+
+// a material file's text that must not parse, and the exact message
+void rejects(const std::string &text, const std::string &message)
+{
+  std::vector<SoilMaterial> list;
+  std::string error;
+  EXPECT_FALSE(parse_material_file(text, list, error)) << text;
+  EXPECT_EQ(error, message);
+}
 }    // namespace
 
 TEST(MaterialFile, ParsesSoilAndWallEntriesWithComments)
@@ -99,12 +108,6 @@ TEST(MaterialFile, LineWithoutModelWordIsDruckerPrager)
 
 TEST(MaterialFile, RejectsBadEntriesNamingLineModelAndParameter)
 {
-  std::vector<SoilMaterial> list;
-  std::string error;
-  auto rejects = [&](const std::string &text, const std::string &message) {
-    EXPECT_FALSE(parse_material_file(text, list, error)) << text;
-    EXPECT_EQ(error, message);
-  };
   rejects("a soil 2650 0.7e6 0.3 19.8 0\n",
           "line 1: material a: drucker_prager needs 5 parameters (K nu phi psi c), got 4");
   rejects("\na soil 2650 0.7e6 0.7 19.8 0 0\n",
@@ -216,12 +219,6 @@ TEST(MaterialFile, SaturatedSoilFreeWaterAndDrainedWall)
 
 TEST(MaterialFile, RejectsBadPoreWaterAndWater)
 {
-  std::vector<SoilMaterial> list;
-  std::string error;
-  auto rejects = [&](const std::string &text, const std::string &message) {
-    EXPECT_FALSE(parse_material_file(text, list, error)) << text;
-    EXPECT_EQ(error, message);
-  };
   const std::string soil = "a soil 2000 drucker_prager 1.5e6 0.3 30 0 0 ";
   rejects(soil + "porosity 0.4\n", "line 1: material a: a saturated soil needs both porosity and "
                                    "permeability (missing: permeability)");

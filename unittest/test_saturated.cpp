@@ -86,8 +86,10 @@ TEST_F(Saturated, ConsolidationFollowsTerzaghi)
 // examples/saturated/in.quick: upward seepage through a 0.1 m layer of sand (rho_sat 2000, so that
 // the critical gradient gamma' / gamma_w is 1). Below it (i = 0.8, held 0.05 s) the layer stays,
 // its mean speed under 1e-4 m/s (measured 3e-6), with the floor's pore pressure within 1% of the
-// theory's (0.04% measured); above it (i = 1.2) the layer lifts, rising at over 1 mm/s (measured
-// 8 mm/s; at 1.1, 2.6 mm/s).
+// theory's (0.04% measured) and the water entering through the floor (compute sph/soil/atom
+// drained_inflow) within 5% of Darcy's k i W (measured 3.0% above: the free water's pressure
+// noise drives 1.3e-6 m^2/s of its own, 4% of it); above it (i = 1.2) the layer lifts, rising at
+// over 1 mm/s (measured 8 mm/s; at 1.1, 2.6 mm/s).
 TEST_F(Saturated, UpwardSeepageLiftsTheLayerAboveTheCriticalGradient)
 {
   for (const std::string gradient : {"0.8", "1.2"}) {
@@ -101,6 +103,7 @@ TEST_F(Saturated, UpwardSeepageLiftsTheLayerAboveTheCriticalGradient)
     if (gradient == "0.8") {
       EXPECT_LT(std::fabs(speed), 1e-4) << "i = 0.8";
       EXPECT_NEAR(equal("base_pore_pressure"), equal("p_theory"), 0.01 * equal("p_theory"));
+      EXPECT_NEAR(equal("floor_flux"), equal("darcy"), 0.05 * equal("darcy"));
     } else {
       EXPECT_GT(speed, 1e-3) << "i = 1.2";
     }

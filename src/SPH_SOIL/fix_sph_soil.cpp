@@ -139,7 +139,7 @@ void FixSPHSoil::init()
   density_floor_of_type.assign(atom->ntypes + 1, 0.0);
   storage_of_type.assign(atom->ntypes + 1, 0.0);
   water_modulus_of_type.assign(atom->ntypes + 1, 0.0);
-  pressures = false;
+  pressures = pair->carries_pressures();
   max_diffusivity = 0.0;
   for (int type = 1; type <= atom->ntypes; type++) {
     model_of_type[type] = pair->model(type);
@@ -147,7 +147,6 @@ void FixSPHSoil::init()
     const auto &material = pair->material(type);
     density_floor_of_type[type] = SPHSoil::DENSITY_FLOOR * material.density;
     if (material.water) water_modulus_of_type[type] = material.model->p_wave_modulus();
-    pressures = pressures || material.water || material.saturated;
     if (material.saturated) {
       storage_of_type[type] = material.pore_water.storage_modulus();
       max_diffusivity = MAX(max_diffusivity, material.pore_water.diffusivity());
@@ -383,7 +382,7 @@ template <bool LEVELS, bool PRESSURES> void FixSPHSoil::kick_and_correct()
         yielded++;
     }
     if (PRESSURES) water_pressure(i);
-    if (unstable(i) && lower_id(i, first_unstable)) first_unstable = i;
+    if (unstable<PRESSURES>(i) && lower_id(i, first_unstable)) first_unstable = i;
   }
   yielded_count = yielded;
   stop_if_unstable(first_unstable);
@@ -560,13 +559,13 @@ template <bool PRESSURES> void FixSPHSoil::initial_integrate_levels()
    a run that goes unstable stops, naming the particle and the step
 ------------------------------------------------------------------------- */
 
-bool FixSPHSoil::unstable(int i) const
+template <bool PRESSURES> bool FixSPHSoil::unstable(int i) const
 {
   // one test for all: a NaN or an infinity anywhere makes the sum non-finite
   double sum = atom->rho[i];
   for (int a = 0; a < 3; a++) sum += atom->v[i][a] + atom->x[i][a];
   for (int k = 0; k < 6; k++) sum += avec->stress[i][k];
-  sum += avec->pore_pressure[i];
+  if (PRESSURES) sum += avec->pore_pressure[i];
   return !(std::isfinite(sum) && atom->rho[i] > 0.0);
 }
 

@@ -152,7 +152,7 @@ class FixSPHSoil : public Fix {
     const int type = atom->type[i];
     return (atom->mask[i] & groupbit) && type < (int) model_of_type.size() && model_of_type[type];
   }
-  bool unstable(int i) const;
+  template <bool PRESSURES> bool unstable(int i) const;
   // whether atom i has a lower ID than atom j (any, if j < 0)
   bool lower_id(int i, int j) const { return j < 0 || atom->tag[i] < atom->tag[j]; }
   void stop_if_unstable(int first_unstable);

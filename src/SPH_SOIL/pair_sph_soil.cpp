@@ -230,8 +230,7 @@ void PairSPHSoil::init_style()
   walls->init();
   pore_water->init(materials.all(), materials.set_flags());
   // free water: the momentum sum's multiphase form (see the header)
-  multiphase = false;
-  for (int t = 1; t <= atom->ntypes; t++) multiphase = multiphase || materials.of(t).water;
+  multiphase = pore_water->free_water();
   schedule = SPHSoilFixes::step_schedule(lmp);
   // the fix that keeps our list valid between LAMMPS's reneighbourings (created once, as
   // pair_granular creates its history fix)
@@ -330,6 +329,11 @@ void *PairSPHSoil::extract(const char *name, int &dim)
 double PairSPHSoil::drained_inflow(int i) const
 {
   return pore_water->drained_inflow(i);
+}
+
+bool PairSPHSoil::carries_pressures() const
+{
+  return pore_water->pressures();
 }
 
 /* ----------------------------------------------------------------------

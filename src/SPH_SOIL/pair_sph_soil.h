@@ -76,6 +76,8 @@ class PairSPHSoil : public Pair {
   bigint soil_behind_walls() const;
   // the pore water that owned atom i took in from drained partners (sph_soil_pore_water.h)
   double drained_inflow(int i) const;
+  // whether some type carries a pressure, saturated soil or free water (known after init)
+  bool carries_pressures() const;
   // whether the pair loop adds the artificial stress (known after init)
   bool artificial_stress_active() const { return has_artificial_stress; }
 
@@ -136,7 +138,8 @@ class PairSPHSoil : public Pair {
   // form makes the interface unstable; doc/theory.rst 7.5). The packed rows then hold the stress
   // itself, not stress / rho^2
   bool multiphase;
-  template <int DIMENSION, bool PHASES> void pack_atoms();
+  // (PRESSURES: some type carries a pressure, which the total stress subtracts)
+  template <int DIMENSION, bool PHASES, bool PRESSURES> void pack_atoms();
   // with a time step per level (fix sph/soil's schedule, soil_level_steps.h): per owned and
   // ghost atom its signed period (+n: it ends a step at this evaluation, -n: not; a wall
   // particle -infinity, it takes its partner's), from its h

@@ -128,7 +128,7 @@ void PairSPHSoil::pack_step_periods()
    eight arrays; and the accumulators of the sums, set to zero
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION, bool PHASES> void PairSPHSoil::pack_atoms()
+template <int DIMENSION, bool PHASES, bool PRESSURES> void PairSPHSoil::pack_atoms()
 {
   const int nall = atom->nlocal + atom->nghost;
   if (nall > nmax_packed) {
@@ -154,7 +154,7 @@ template <int DIMENSION, bool PHASES> void PairSPHSoil::pack_atoms()
     }
     // the total stress: a saturated soil's effective stress less its pore pressure (0 for
     // dry soil; a drained wall's own is not the soil's, and no wall particle's stress is used)
-    const double pore = pore_pressure[i];
+    const double pore = PRESSURES ? pore_pressure[i] : 0.0;
     for (int k = 0; k < 3; k++) row[P_STRESS + k] = (stress[i][k] - pore) * inv_rho2;
     for (int k = 3; k < 6; k++) row[P_STRESS + k] = stress[i][k] * inv_rho2;
     row[P_VOLUME] = rmass[i] * inv_rho;
@@ -324,7 +324,11 @@ void PairSPHSoil::eval()
   const int *const wall_kind = walls->kinds();
   const int newton_pair = force->newton_pair;
 
-  pack_atoms<D, PHASES>();    // (re)allocates the packed rows: take their addresses after it
+  // (re)allocates the packed rows: take their addresses after it. Free water carries a pressure
+  if (PHASES || pore_water->pressures())
+    pack_atoms<D, PHASES, true>();
+  else
+    pack_atoms<D, false, false>();
   walls->prepare(packed, neighbours, kernel, D, PHASES);
   if (ARTIFICIAL_STRESS) pack_artificial_stress<D, Kernel, PHASES>();
   const int *const artificial_type = type_artificial_stress.data();

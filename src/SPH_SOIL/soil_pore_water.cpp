@@ -83,7 +83,8 @@ bool PoreWater::from_words(std::vector<std::string> &words, PoreWater &water, bo
 
 std::string PoreWater::check_density(double saturated_density) const
 {
-  if (saturated_density > porosity * water_density) return "";
+  // (grains of positive mass)
+  if (grain_density(saturated_density) > 0.0) return "";
   return "the saturated density rho0 = " + format_number(saturated_density) +
       " must exceed porosity * water_density = " + format_number(porosity * water_density) +
       " (rho0 of a saturated soil is the mass of grains and water per volume)";

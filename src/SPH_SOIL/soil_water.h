@@ -41,7 +41,6 @@ class FreeWater : public ConstitutiveModel {
   // no tension for SPH's artificial stress to hold together
   double tensile_strength() const override { return 0.0; }
 
-  double bulk_modulus() const { return modulus; }
 
   // the water pressure of a density (Pa, positive in compression)
   static double pressure(double density, double reference_density, double bulk_modulus)

@@ -40,6 +40,8 @@ class SPHSoilPoreWater : protected Pointers {
   bool pressures() const { return saturated || water; }
   // whether some type is a saturated soil: the pore water flows
   bool flows() const { return saturated; }
+  // whether some type is free water
+  bool free_water() const { return water; }
 
   // the ghosts' pore pressure, from their owners (collective)
   void share_pressures();
