@@ -45,6 +45,7 @@ STYLES = {'sph_soil': ('in.bench_sph_soil', []),
           'sph_soil_cohesive': ('in.bench_sph_soil', ['-var', 'cohesion', '1.0e5']),
           'sph_soil_saturated': ('in.bench_sph_soil', ['-var', 'material', 'saturated']),
           'sph_soil_water': ('in.bench_sph_soil', ['-var', 'material', 'water']),
+          'sph_soil_corrected': ('in.bench_sph_soil', ['-var', 'correction', 'yes']),
           'sph_taitwater': ('in.bench_taitwater', []), 'smd_ulsph': ('in.bench_ulsph', [])}
 
 

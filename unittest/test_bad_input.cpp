@@ -137,9 +137,11 @@ std::vector<BadInput> cases()
   // ---- pair_style sph/soil
   error("PairUnknownKeyword", "patch", {}, "pair_style sph/soil gamma 1",
         "Illegal pair_style sph/soil keyword gamma (allowed: alpha, beta, viscosity_h0, wall, kernel, "
-        "artificial_stress, continuity)");
+        "artificial_stress, continuity, gradient_correction)");
   error("PairContinuity", "patch", {}, "pair_style sph/soil continuity density",
         "Illegal pair_style sph/soil continuity density: must be volume or mass");
+  error("PairGradientCorrection", "patch", {}, "pair_style sph/soil gradient_correction 1",
+        "Illegal pair_style sph/soil gradient_correction 1: must be yes or no");
   error("PairViscosityH0Negative", "patch", {}, "pair_style sph/soil viscosity_h0 -0.001",
         "Illegal pair_style sph/soil viscosity_h0 -0.001: must be >= 0");
   error("PairKernel", "patch", {}, "pair_style sph/soil kernel gaussian",

@@ -2,6 +2,7 @@
 // quadrature, compact support and continuity, derivatives against finite differences, the
 // inflection point that the refinement's instability conditions use, the pair loop's form of
 // the gradient; and the choice by keyword.
+#include "soil_gradient_correction.h"
 #include "soil_kernels.h"
 
 #include "gtest/gtest.h"
@@ -180,4 +181,29 @@ TEST(KernelRegistry, ARegisteredDummyKernelIsKnownByItsNameAndDispatchedTo)
   // the package's own registry is the same template over its list
   EXPECT_EQ(Kernels::COUNT, 2);
   EXPECT_EQ(Kernels::dispatch(0, SupportOf()), double(CubicSpline::SUPPORT));
+}
+
+// The first moment C = -(1/D) sum_j V_j factor r^2 of the cubic spline on a square lattice at
+// h = 1.2 d: 0.9908 (doc/theory.rst 2.6 and 2.7), and the correction: 1 / C for a full kernel,
+// none for a cut one (a free surface), linear in between, continuous at both ends
+TEST(GradientCorrection, FirstMomentOfALatticeAndTheFade)
+{
+  const double d = 0.004, h = 1.2 * d;
+  double sum = 0.0;
+  for (int i = -4; i <= 4; i++)
+    for (int j = -4; j <= 4; j++) {
+      if (i == 0 && j == 0) continue;
+      const double r = d * std::sqrt((double) (i * i + j * j));
+      if (r >= 2.0 * h) continue;
+      const double factor = SPHSoil::CubicSpline::gradient_factor(2, r, h);
+      sum += SPHSoil::first_moment_term(d * d, factor, r * r);
+    }
+  const double moment = sum / 2;
+  EXPECT_NEAR(moment, 0.9908, 5e-5);
+  EXPECT_DOUBLE_EQ(SPHSoil::gradient_correction(moment), 1.0 / moment);
+  EXPECT_DOUBLE_EQ(SPHSoil::gradient_correction(1.05), 1.0 / 1.05);
+  EXPECT_EQ(SPHSoil::gradient_correction(0.5), 1.0);
+  EXPECT_EQ(SPHSoil::gradient_correction(0.8), 1.0);
+  EXPECT_NEAR(SPHSoil::gradient_correction(0.9 - 1e-12), 1.0 / 0.9, 1e-10);
+  EXPECT_DOUBLE_EQ(SPHSoil::gradient_correction(0.85), 1.0 + 0.5 * (1.0 / 0.85 - 1.0));
 }

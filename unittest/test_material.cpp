@@ -246,6 +246,16 @@ TEST(MaterialFile, RejectsBadPoreWaterAndWater)
   rejects("a soil 300 drucker_prager 1.5e6 0.3 30 0 0 porosity 0.4 permeability 1e-4\n",
           "line 1: material a: the saturated density rho0 = 300 must exceed porosity * "
           "water_density = 400 (rho0 of a saturated soil is the mass of grains and water per volume)");
+  rejects(soil + "porosity 0.4 permeability 1e-4 permeability_law\n",
+          "line 1: material a: pore water permeability_law needs a value: one of constant, kozeny_carman");
+  rejects(soil + "porosity 0.4 permeability 1e-4 permeability_law ergun\n",
+          "line 1: material a: pore water permeability_law ergun is unknown: must be one of "
+          "constant, kozeny_carman");
+  rejects(soil + "porosity 0.4 permeability 1e-4 permeability_law constant permeability_law kozeny_carman\n",
+          "line 1: material a: pore water permeability_law given twice");
+  rejects(soil + "permeability_law kozeny_carman\n",
+          "line 1: material a: a saturated soil needs both porosity and permeability (missing: "
+          "porosity and permeability)");
   rejects("w water\n", "line 1: material w: water needs its density rho_w, finite and > 0");
   rejects("w water -1000 2e7\n", "line 1: material w: water needs its density rho_w, finite and > 0, got -1000");
   rejects("w water 1000\n",
@@ -254,6 +264,34 @@ TEST(MaterialFile, RejectsBadPoreWaterAndWater)
   rejects("w water 1000 2e7 3\n",
           "line 1: material w: water needs its bulk modulus K_w (Pa) after its density, got 2 value(s)");
   rejects("w wall drained drained\n", "line 1: material w: wall drained given twice");
+}
+
+// Kozeny-Carman (soil_pore_water.h): k at the reference density unchanged; the porosity from the
+// density with the grains kept; k(n) / k(n0) = n^3 (1 - n0)^2 / (n0^3 (1 - n)^2); a constant k
+// ignores the density
+TEST(PoreWater, KozenyCarmanFollowsThePorosity)
+{
+  std::vector<SoilMaterial> list;
+  std::string error;
+  ASSERT_TRUE(parse_material_file("a soil 2000 drucker_prager 1.5e6 0.3 30 0 0 porosity 0.4 "
+                                  "permeability 1e-4 permeability_law kozeny_carman\n"
+                                  "b soil 2000 drucker_prager 1.5e6 0.3 30 0 0 porosity 0.4 "
+                                  "permeability 1e-4 permeability_law constant\n",
+                                  list, error))
+      << error;
+  const PoreWater &kc = list[0].pore_water, &constant = list[1].pore_water;
+  EXPECT_TRUE(kc.variable_conductivity());
+  EXPECT_FALSE(constant.variable_conductivity());
+  EXPECT_EQ(kc.conductivity, 1e-4);
+  EXPECT_DOUBLE_EQ(kc.conductivity_factor(1.0), 1.0);
+  // 5% less dense: the grains (0.6 of the volume) now fill 0.57
+  EXPECT_DOUBLE_EQ(kc.porosity_at(0.95), 1.0 - 0.6 * 0.95);
+  const double n = 0.43, expected = n * n * n / (0.4 * 0.4 * 0.4) * (0.6 * 0.6) / (0.57 * 0.57);
+  EXPECT_NEAR(kc.conductivity_factor(0.95), expected, 1e-12);
+  EXPECT_GT(kc.conductivity_factor(0.95), 1.3);    // a dilating soil drains faster
+  EXPECT_LT(kc.conductivity_factor(1.05), 0.8);    // a contracting one slower
+  EXPECT_EQ(kc.conductivity_factor(1.0 / 0.6), 0.0);    // the pores closed
+  EXPECT_EQ(constant.conductivity_factor(0.95), 1.0);
 }
 
 // The pore water's pair term (soil_pore_water.h): no flow in a hydrostatic state (the head

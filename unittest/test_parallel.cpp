@@ -278,8 +278,9 @@ TEST_F(Parallel, FrictionalSlidingWithMigrationAndBalancing)
 }
 
 // Saturated soil under free water (the pore pressure and its flow, the water's pressure, the
-// multiphase form) drifting across the ranks under dynamic balancing: the same stress and pore
-// pressure on 1, 2 and 4 ranks. (A data file does not hold the pore pressure: each run sets it.)
+// multiphase form, the gradient correction's moments and factors across the ranks) drifting
+// across the ranks under dynamic balancing: the same stress and pore pressure on 1, 2 and 4
+// ranks. (A data file does not hold the pore pressure: each run sets it.)
 TEST_F(Parallel, SoilAndWaterWithMigrationAndBalancing)
 {
   HIDE_OUTPUT([&] {
@@ -292,7 +293,7 @@ TEST_F(Parallel, SoilAndWaterWithMigrationAndBalancing)
       {"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
        "read_data saturated.data", "group soil type 1",
        "variable pore atom 300.0+100.0*sin(400*x)*cos(300*y)", "sph_soil/set soil pore_pressure v_pore",
-       "pair_style sph/soil",
+       "pair_style sph/soil gradient_correction yes",
        "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 porosity 0.4 permeability 1e-4 "
        "water_modulus 2e7",
        "pair_coeff 2 2 water 1000 2e6", "fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin",

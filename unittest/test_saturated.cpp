@@ -4,12 +4,15 @@
 // momentum of soil and water together: test_soil_physics.)
 #include "sph_soil_testing.h"
 
+#include "soil_pore_water.h"
+
 #include "input.h"
 #include "modify.h"
 #include "update.h"
 #include "variable.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 using namespace LAMMPS_NS;
@@ -83,6 +86,28 @@ TEST_F(Saturated, ConsolidationFollowsTerzaghi)
   }
 }
 
+// examples/saturated/in.hydrostatic: a periodic layer of saturated sand, 0.1 m under 2 cm of free
+// water on an extrapolated floor, with the gradient correction, drained to rest. The total
+// vertical stress's slope within 0.3% of rho_sat g (measured +0.07%; +0.96% without the
+// correction, the kernel's first moment), the pore pressure at the base within 2.5% of
+// rho_w g (H + D) and the effective stress within 3% of the buoyant weight (measured -2.0% and
+// +2.5% at 4 mm: the free water's surface sits at its top row, half a spacing below the water's
+// surface, and that offset of rho_w g d / 2 carries over into the pore water; -0.6% and +0.7% at
+// 2 mm), the layer at rest (3e-7 m/s measured)
+TEST_F(Saturated, SubmergedLayerCarriesItsBuoyantWeight)
+{
+  HIDE_OUTPUT([&] {
+    command("clear");
+    command("units si");
+    command("include " + EXAMPLES + "/saturated/in.hydrostatic");
+  });
+  const double rho_sat_g = 2000 * 9.81;
+  EXPECT_NEAR(equal("slope_total"), rho_sat_g, 0.003 * rho_sat_g);
+  EXPECT_NEAR(equal("base_p"), equal("p_expected"), 0.025 * equal("p_expected"));
+  EXPECT_NEAR(equal("base_s"), equal("s_expected"), -0.03 * equal("s_expected"));
+  EXPECT_LT(equal("largest_speed"), 1e-5);
+}
+
 // examples/saturated/in.quick: upward seepage through a 0.1 m layer of sand (rho_sat 2000, so that
 // the critical gradient gamma' / gamma_w is 1). Below it (i = 0.8, held 0.05 s) the layer stays,
 // its mean speed under 1e-4 m/s (measured 3e-6), with the floor's pore pressure within 1% of the
@@ -108,4 +133,28 @@ TEST_F(Saturated, UpwardSeepageLiftsTheLayerAboveTheCriticalGradient)
       EXPECT_GT(speed, 1e-3) << "i = 1.2";
     }
   }
+}
+
+// The same layer with Kozeny-Carman's permeability, its particles 5% less dense than its
+// reference (porosity 0.43 there, 0.4 at the reference): at i = 0.8 the water through the floor
+// within 5% of Darcy's with k scaled by the law's factor (1.377), a flux that the constant k misses
+// by 38%
+TEST_F(Saturated, KozenyCarmanScalesTheSeepageWithThePorosity)
+{
+  HIDE_OUTPUT([&] {
+    command("clear");
+    command("units si");
+    command("variable gradients index 0.8");
+    command("variable law index kozeny_carman");
+    command("variable rho0 index " + std::to_string(2000.0 / 0.95));
+    command("include " + EXAMPLES + "/saturated/in.quick");
+  });
+  SPHSoil::PoreWater water;
+  water.porosity = 0.4;
+  water.law = SPHSoil::PermeabilityLaw::KOZENY_CARMAN;
+  const double factor = water.conductivity_factor(0.95);
+  EXPECT_NEAR(factor, 1.377, 0.001);
+  std::printf("kozeny-carman: floor flux %.4e against k i W times %.4f = %.4e\n", equal("floor_flux"),
+              factor, factor * equal("darcy"));
+  EXPECT_NEAR(equal("floor_flux"), factor * equal("darcy"), 0.05 * factor * equal("darcy"));
 }

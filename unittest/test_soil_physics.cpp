@@ -162,6 +162,44 @@ TEST_F(SoilPhysics, SoilAndWaterConserveMassAndMomentum)
       ASSERT_DOUBLE_EQ(avec->pore_pressure[i], 2e6 * (atom->rho[i] / 1000.0 - 1.0));
 }
 
+// pair_style sph/soil gradient_correction yes (doc/theory.rst 2.7): each particle's stress over
+// its kernel's first moment keeps every pair's force antisymmetric, so that saturated soil and free
+// water still conserve mass and momentum to round-off; and the run is not the uncorrected one
+TEST_F(SoilPhysics, GradientCorrectionConservesMomentum)
+{
+  auto run = [&](const std::string &correction) {
+    HIDE_OUTPUT([&] {
+      command("clear");
+      command("units si");
+      for (const auto &line : soil_and_water_patch_commands()) command(line);
+      command("pair_style sph/soil gradient_correction " + correction);
+      command("pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 porosity 0.4 "
+              "permeability 1e-4 water_modulus 2e7");
+      command("pair_coeff 2 2 water 1000 2e6");
+      command("variable vx atom 0.02*sin(2*PI*y/0.16)");
+      command("velocity all set v_vx NULL NULL units box");
+      command("fix integrate all sph/soil cfl 0.1");
+      command("neighbor 0.002 bin");
+      command("thermo 0");
+    });
+    const auto before = totals();
+    HIDE_OUTPUT([&] { command("run 500 post no"); });
+    expect_mass_and_momentum_conserved(before, totals());
+    return gather_state(lmp);
+  };
+  const auto corrected = run("yes");
+  const auto plain = run("no");
+  // (the state's stress columns: sxx to syz)
+  const int first_stress = 11;
+  double largest = 0.0;
+  for (const auto &atom : corrected) {
+    const auto &other = plain.at(atom.first);
+    for (int k = first_stress; k < first_stress + 6; k++)
+      largest = std::max(largest, std::fabs(atom.second[k] - other[k]));
+  }
+  EXPECT_GT(largest, 1.0) << "the corrected run's stresses are the plain run's";
+}
+
 // pair_style sph/soil kernel wendland2: a run with the Wendland C2 kernel conserves mass and
 // momentum, and is not the cubic spline's run
 TEST_F(SoilPhysics, WendlandKernelRunConservesMomentum)

@@ -22,6 +22,7 @@
 #include "sph_soil_fixes.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
+#include "sph_soil_pore_water.h"
 #include "thermo.h"
 #include "update.h"
 #include "utils.h"
@@ -140,6 +141,7 @@ void FixSPHSoil::init()
   storage_of_type.assign(atom->ntypes + 1, 0.0);
   water_modulus_of_type.assign(atom->ntypes + 1, 0.0);
   pressures = pair->carries_pressures();
+  variable_diffusivity = pair->pore_water_unit().variable_conductivity();
   max_diffusivity = 0.0;
   for (int type = 1; type <= atom->ntypes; type++) {
     model_of_type[type] = pair->model(type);
@@ -660,6 +662,11 @@ double FixSPHSoil::stable_timestep()
   if (min_h >= BIG || c <= 0.0) return update->dt;
   double dt = (cfl > 0.0 ? cfl : stable_cfl) * min_h / c;
   // the pore pressure's diffusion (explicit: dt D / h^2 bounded, doc/theory.rst 7.3)
+  // (where k follows the porosity: the largest at the particles' densities now)
+  if (variable_diffusivity) {
+    const double local = pair->pore_water_unit().largest_diffusivity(groupbit);
+    MPI_Allreduce(&local, &max_diffusivity, 1, MPI_DOUBLE, MPI_MAX, world);
+  }
   const double diffusion_dt = max_diffusivity > 0.0 ? DIFFUSION_NUMBER * min_h * min_h / max_diffusivity : BIG;
   diffusion_bound = diffusion_dt < dt;
   dt = MIN(dt, diffusion_dt);

@@ -83,6 +83,8 @@ class FixSPHSoil : public Fix {
   // the pore pressure's largest diffusivity (soil_pore_water.h; 0 without saturated soil) and
   // the bound it puts on the step, dt <= DIFFUSION_NUMBER h^2 / D
   double max_diffusivity;
+  // whether it changes with the densities (a permeability law): found at every step
+  bool variable_diffusivity = false;
   static constexpr double DIFFUSION_NUMBER = 0.1;
   bool diffusion_bound;    // whether the last stable_timestep() was the diffusion's
   std::string stability_bound() const;

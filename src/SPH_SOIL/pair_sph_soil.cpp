@@ -18,6 +18,7 @@
 #include "soil_packed_rows.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
+#include "sph_soil_gradient_correction.h"
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
 #include "sph_soil_pore_water.h"
@@ -96,13 +97,14 @@ void PairSPHSoil::set_defaults()
   artificial_stress_epsilon = SPHSoil::ARTIFICIAL_STRESS_EPSILON;
   free_slip = false;
   continuity_volume = true;
+  gradient_correction = false;
   kernel = SPHSoil::KernelKind();
 }
 
 /* ----------------------------------------------------------------------
    pair_style sph/soil [alpha A] [beta B] [viscosity_h0 H] [wall noslip|freeslip]
                        [kernel cubic|wendland2] [artificial_stress epsilon]
-                       [continuity volume|mass]
+                       [continuity volume|mass] [gradient_correction yes|no]
 ------------------------------------------------------------------------- */
 
 void PairSPHSoil::settings(int narg, char **arg)
@@ -112,19 +114,20 @@ void PairSPHSoil::settings(int narg, char **arg)
   auto number_of = [&](const char *keyword, const char *text, const Range &range) {
     return number(FLERR, lmp, std::string("pair_style sph/soil ") + keyword, text, range);
   };
+  // a keyword of two values: whether it is `first`
+  auto one_of_two = [&](const char *keyword, const char *v, const char *first, const char *second) {
+    if (strcmp(v, first) != 0 && strcmp(v, second) != 0)
+      SPHSoilCompat::error_all(lmp, FLERR, "Illegal pair_style sph/soil {} {}: must be {} or {}",
+                               keyword, v, first, second);
+    return strcmp(v, first) == 0;
+  };
   // the keywords: one line each, and the "allowed" list of the error from them
   const std::vector<std::pair<const char *, std::function<void(const char *)>>> keywords = {
       {"alpha", [&](const char *v) { viscosity_alpha = number_of("alpha", v, at_least(0.0)); }},
       {"beta", [&](const char *v) { viscosity_beta = number_of("beta", v, at_least(0.0)); }},
       {"viscosity_h0",
        [&](const char *v) { viscosity_h0 = number_of("viscosity_h0", v, at_least(0.0)); }},
-      {"wall",
-       [&](const char *v) {
-         if (strcmp(v, "noslip") != 0 && strcmp(v, "freeslip") != 0)
-           SPHSoilCompat::error_all(
-               lmp, FLERR, "Illegal pair_style sph/soil wall {}: must be noslip or freeslip", v);
-         free_slip = strcmp(v, "freeslip") == 0;
-       }},
+      {"wall", [&](const char *v) { free_slip = !one_of_two("wall", v, "noslip", "freeslip"); }},
       {"kernel",
        [&](const char *v) {
          if (!SPHSoil::kernel_kind(v, kernel))
@@ -138,12 +141,9 @@ void PairSPHSoil::settings(int narg, char **arg)
              number_of("artificial_stress", v, between(0.0, 1.0, false, false));
        }},
       {"continuity",
-       [&](const char *v) {
-         if (strcmp(v, "volume") != 0 && strcmp(v, "mass") != 0)
-           SPHSoilCompat::error_all(
-               lmp, FLERR, "Illegal pair_style sph/soil continuity {}: must be volume or mass", v);
-         continuity_volume = strcmp(v, "volume") == 0;
-       }},
+       [&](const char *v) { continuity_volume = one_of_two("continuity", v, "volume", "mass"); }},
+      {"gradient_correction",
+       [&](const char *v) { gradient_correction = one_of_two("gradient_correction", v, "yes", "no"); }},
   };
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
@@ -231,6 +231,8 @@ void PairSPHSoil::init_style()
   pore_water->init(materials.all(), materials.set_flags());
   // free water: the momentum sum's multiphase form (see the header)
   multiphase = pore_water->free_water();
+  if (gradient_correction && !correction) correction.reset(new SPHSoilGradientCorrection(lmp, this));
+  if (!gradient_correction) correction.reset();
   schedule = SPHSoilFixes::step_schedule(lmp);
   // the fix that keeps our list valid between LAMMPS's reneighbourings (created once, as
   // pair_granular creates its history fix)
@@ -343,24 +345,28 @@ bool PairSPHSoil::carries_pressures() const
 int PairSPHSoil::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   if (pore_water->communicating()) return pore_water->pack_forward_comm(n, list, buf);
+  if (correction && correction->communicating()) return correction->pack_forward_comm(n, list, buf);
   return walls->pack_forward_comm(n, list, buf);
 }
 
 void PairSPHSoil::unpack_forward_comm(int n, int first, double *buf)
 {
   if (pore_water->communicating()) return pore_water->unpack_forward_comm(n, first, buf);
+  if (correction && correction->communicating()) return correction->unpack_forward_comm(n, first, buf);
   walls->unpack_forward_comm(n, first, buf);
 }
 
 int PairSPHSoil::pack_reverse_comm(int n, int first, double *buf)
 {
   if (pore_water->communicating()) return pore_water->pack_reverse_comm(n, first, buf);
+  if (correction && correction->communicating()) return correction->pack_reverse_comm(n, first, buf);
   return walls->pack_reverse_comm(n, first, buf);
 }
 
 void PairSPHSoil::unpack_reverse_comm(int n, int *list, double *buf)
 {
   if (pore_water->communicating()) return pore_water->unpack_reverse_comm(n, list, buf);
+  if (correction && correction->communicating()) return correction->unpack_reverse_comm(n, list, buf);
   walls->unpack_reverse_comm(n, list, buf);
 }
 
@@ -372,38 +378,40 @@ void PairSPHSoil::unpack_reverse_comm(int n, int *list, double *buf)
 void PairSPHSoil::write_restart_settings(FILE *fp)
 {
   const int format = RESTART_FORMAT;
-  const int flags[3] = {free_slip ? 1 : 0, kernel.index, continuity_volume ? 1 : 0};
+  const int flags[4] = {free_slip ? 1 : 0, kernel.index, continuity_volume ? 1 : 0,
+                        gradient_correction ? 1 : 0};
   const double numbers[4] = {viscosity_alpha, viscosity_beta, viscosity_h0,
                              artificial_stress_epsilon};
   fwrite(&format, sizeof(int), 1, fp);
-  fwrite(flags, sizeof(int), 3, fp);
+  fwrite(flags, sizeof(int), 4, fp);
   fwrite(numbers, sizeof(double), 4, fp);
 }
 
 void PairSPHSoil::read_restart_settings(FILE *fp)
 {
   // format 1 (before the continuity keyword) was written by runs of the mass form: they go on
-  // with it
-  int format = 0, flags[3] = {0, 0, 0};
+  // with it; format 2 (before gradient_correction) by runs without the correction
+  int format = 0, flags[4] = {0, 0, 0, 0};
   double numbers[4] = {0.0, 0.0, 0.0, 0.0};
   if (comm->me == 0) utils::sfread(FLERR, &format, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&format, 1, MPI_INT, 0, world);
-  if (format != RESTART_FORMAT && format != 1)
+  if (format < 1 || format > RESTART_FORMAT)
     SPHSoilCompat::error_all(
         lmp, FLERR,
         "Restart file holds pair_style sph/soil data of format {}; this build of "
         "SPH_SOIL reads formats 1 to {}",
         format, RESTART_FORMAT);
-  const int nflags = format == 1 ? 2 : 3;
+  const int nflags = format + 1;
   if (comm->me == 0) {
     utils::sfread(FLERR, flags, sizeof(int), nflags, fp, nullptr, error);
     utils::sfread(FLERR, numbers, sizeof(double), 4, fp, nullptr, error);
   }
-  MPI_Bcast(flags, 3, MPI_INT, 0, world);
+  MPI_Bcast(flags, 4, MPI_INT, 0, world);
   MPI_Bcast(numbers, 4, MPI_DOUBLE, 0, world);
   free_slip = flags[0] != 0;
   kernel.index = flags[1];
   continuity_volume = flags[2] != 0;
+  gradient_correction = flags[3] != 0;
   viscosity_alpha = numbers[0];
   viscosity_beta = numbers[1];
   viscosity_h0 = numbers[2];

@@ -54,7 +54,7 @@ class PairSPHSoil : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   // the layout of the style's restart data has a number: read_restart of another stops
-  static constexpr int RESTART_FORMAT = 2;
+  static constexpr int RESTART_FORMAT = 3;
 
   // for fix sph/soil, the refinement and the computes
   const SPHSoil::SoilMaterial &material(int type) const { return materials.of(type); }
@@ -78,6 +78,8 @@ class PairSPHSoil : public Pair {
   double drained_inflow(int i) const;
   // whether some type carries a pressure, saturated soil or free water (known after init)
   bool carries_pressures() const;
+  // the pore water of saturated soil (known after init)
+  const class SPHSoilPoreWater &pore_water_unit() const { return *pore_water; }
   // whether the pair loop adds the artificial stress (known after init)
   bool artificial_stress_active() const { return has_artificial_stress; }
 
@@ -98,6 +100,9 @@ class PairSPHSoil : public Pair {
   SPHSoilMaterials materials;
   std::unique_ptr<class SPHSoilWalls> walls;
   std::unique_ptr<class SPHSoilPoreWater> pore_water;
+  // the first-moment correction of the gradients (sph_soil_gradient_correction.h), or none
+  std::unique_ptr<class SPHSoilGradientCorrection> correction;
+  bool gradient_correction;    // pair_style ... gradient_correction yes
   double **sound_speed_ij;    // mean P-wave speed of a type pair
   double max_h;               // largest smoothing length at init
   class AtomVecSPHSoil *avec;
@@ -151,7 +156,9 @@ class PairSPHSoil : public Pair {
   std::vector<int> active_partners;    // the loop's: an atom's partners that end a step
   bool per_level() const { return schedule && schedule->per_level; }
   void pack_step_periods();
-  template <int DIMENSION> void unpack_sums();
+  // (CORRECTED: with the gradient correction's factors; compiled apart, so that runs without it
+  // keep their cost)
+  template <int DIMENSION, bool CORRECTED> void unpack_sums();
   // per owned and ghost atom: R (Voigt, the units of stress / rho^2) and 1 / w(d / h), w the
   // kernel's shape and d = (m / rho)^(1/D) the spacing: the pair's weight is
   // (W(r) / W(d))^4 = (w(r / h_ij) / w(d / h))^4, exact for two particles of the same d / h

@@ -15,6 +15,7 @@
 #include "soil_pair_terms.h"
 #include "soil_refine_split.h"
 #include "soil_wall_images.h"
+#include "sph_soil_gradient_correction.h"
 #include "sph_soil_pore_water.h"
 #include "sph_soil_wall_friction.h"
 #include "sph_soil_walls.h"
@@ -202,7 +203,7 @@ template <int DIMENSION, class Kernel, bool PHASES> void PairSPHSoil::pack_artif
    communication then brings the ghosts' shares to their owners)
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION> void PairSPHSoil::unpack_sums()
+template <int DIMENSION, bool CORRECTED> void PairSPHSoil::unpack_sums()
 {
   // without Newton's third law for ghost pairs, ghost rows hold shares that their owners
   // compute themselves
@@ -215,15 +216,17 @@ template <int DIMENSION> void PairSPHSoil::unpack_sums()
   for (int i = 0; i < n; i++) {
     const double *sum = sums + (size_t) i * SUM_ROW<D>();
     for (int a = 0; a < D; a++) f[i][a] += sum[S_FORCE + a];
+    // i's own gradients over its kernel's first moment (a ghost's share with its owner's factor)
+    const double scale = CORRECTED ? correction->factor(i) : 1.0;
     // the volume form sums V_j (v_ij . grad W) = -div v: the rate is rho_i times it
-    drho[i] += (volume_form ? rho[i] : 1.0) * sum[S_DRHO<D>()];
+    drho[i] += (volume_form ? rho[i] : 1.0) * scale * sum[S_DRHO<D>()];
     // strain rate (Voigt) and spin (xy xz yz): the symmetric and antisymmetric parts
     const double *g = sum + S_GRADIENT<D>();
-    for (int a = 0; a < D; a++) strain_rate[i][a] += g[a * D + a];
+    for (int a = 0; a < D; a++) strain_rate[i][a] += scale * g[a * D + a];
     for (int a = 0; a < D; a++)
       for (int b = a + 1; b < D; b++) {
-        strain_rate[i][SPHSoil::voigt_index(a, b)] += 0.5 * (g[a * D + b] + g[b * D + a]);
-        spin[i][a + b - 1] += 0.5 * (g[a * D + b] - g[b * D + a]);
+        strain_rate[i][SPHSoil::voigt_index(a, b)] += 0.5 * scale * (g[a * D + b] + g[b * D + a]);
+        spin[i][a + b - 1] += 0.5 * scale * (g[a * D + b] - g[b * D + a]);
       }
   }
 }
@@ -264,8 +267,11 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   SPHSoil::pair_terms<D>(separation, r2, hij, viscosity_h, factor, image.dv, image.approach,
                          image.stress_sum, PHASES ? 1.0 / rhos : rhos, c_ij, viscosity_alpha,
                          viscosity_beta, terms);
-  // the image's volume: the wall particle's mass at the soil's density
-  const double mw = pw[P_MASS], volume = mw / rhos;
+  // the image's volume: the wall particle's mass at the soil's density (the paper's form, whose
+  // sums weigh by mass); in the multiphase form, which weighs by volume, the wall particle's own,
+  // so that a wall set up with the soil's mass holds free water at the water's pressure rather
+  // than rho_soil / rho_water times it
+  const double mw = pw[P_MASS], volume = PHASES ? pw[P_VOLUME] : mw / rhos;
   const double mass_product =
       weight * (PHASES ? ps[P_VOLUME] * volume : ps[P_MASS] * mw);
   // a smooth or frictional wall pushes along its normal only, and never pulls (an interface
@@ -275,7 +281,7 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
     const double push = SPHSoil::pushing_part<D>(terms.force, normal);
     if (slip == SPHSoil::SLIP_FRICTION && push > 0.0) {
       const double area =
-          SPHSoil::contact_area(ps[P_VOLUME], pw[P_MASS] / rhos, factor, image.normal_separation);
+          SPHSoil::contact_area(ps[P_VOLUME], volume, factor, image.normal_separation);
       // (stepping per level: the impulse of the pair's period; the area in proportion, so that
       // the interface's pressure is the contact's)
       walls->interface()->add_pair(soil, wall, mass_product * push,
@@ -330,6 +336,8 @@ void PairSPHSoil::eval()
   else
     pack_atoms<D, false, false>();
   walls->prepare(packed, neighbours, kernel, D, PHASES);
+  // the stress of each atom over its kernel's first moment (after the walls have written theirs)
+  if (correction) correction->correct(packed, neighbours, wall_kind, kernel, D);
   if (ARTIFICIAL_STRESS) pack_artificial_stress<D, Kernel, PHASES>();
   const int *const artificial_type = type_artificial_stress.data();
   const double *const in = packed;
@@ -476,7 +484,10 @@ void PairSPHSoil::eval()
     }
   }
 
-  unpack_sums<D>();
+  if (correction)
+    unpack_sums<D, true>();
+  else
+    unpack_sums<D, false>();
   // the pore water's flow: a loop of its own, so that runs of dry soil pay nothing for it
   if (pore_water->flows()) pore_water->flow(packed, neighbours, kernel, D);
 }

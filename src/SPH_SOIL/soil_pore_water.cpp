@@ -32,6 +32,46 @@ const Keyword KEYWORD_TABLE[] = {
 };
 constexpr int NKEYWORDS = sizeof(KEYWORD_TABLE) / sizeof(KEYWORD_TABLE[0]);
 
+// the permeability laws by name (the keyword's values)
+struct Law {
+  const char *name;
+  PermeabilityLaw law;
+};
+const Law LAW_TABLE[] = {
+    {"constant", PermeabilityLaw::CONSTANT},
+    {"kozeny_carman", PermeabilityLaw::KOZENY_CARMAN},
+};
+const char *const LAW_KEYWORD = "permeability_law";
+
+}    // namespace
+
+std::string PoreWater::law_names()
+{
+  std::string names;
+  for (const Law &law : LAW_TABLE) names += (names.empty() ? "" : ", ") + std::string(law.name);
+  return names;
+}
+
+namespace {
+
+// the value of 'permeability_law' into `water`; false with the reason in `error`
+bool read_law(const std::vector<std::string> &words, size_t &k, PoreWater &water, std::string &error)
+{
+  if (k + 1 >= words.size()) {
+    error = std::string("pore water ") + LAW_KEYWORD + " needs a value: one of " + PoreWater::law_names();
+    return false;
+  }
+  const std::string &text = words[++k];
+  for (const Law &law : LAW_TABLE)
+    if (text == law.name) {
+      water.law = law.law;
+      return true;
+    }
+  error = std::string("pore water ") + LAW_KEYWORD + " " + text + " is unknown: must be one of " +
+      PoreWater::law_names();
+  return false;
+}
+
 }    // namespace
 
 bool PoreWater::from_words(std::vector<std::string> &words, PoreWater &water, bool &found,
@@ -39,9 +79,19 @@ bool PoreWater::from_words(std::vector<std::string> &words, PoreWater &water, bo
 {
   water = PoreWater();
   found = false;
-  bool given[NKEYWORDS] = {};
+  bool given[NKEYWORDS] = {}, given_law = false;
   std::vector<std::string> rest;
   for (size_t k = 0; k < words.size(); k++) {
+    if (words[k] == LAW_KEYWORD) {
+      found = true;
+      if (given_law) {
+        error = std::string("pore water ") + LAW_KEYWORD + " given twice";
+        return false;
+      }
+      given_law = true;
+      if (!read_law(words, k, water, error)) return false;
+      continue;
+    }
     int which = -1;
     for (int w = 0; w < NKEYWORDS; w++)
       if (words[k] == KEYWORD_TABLE[w].name) which = w;
@@ -74,7 +124,7 @@ bool PoreWater::from_words(std::vector<std::string> &words, PoreWater &water, bo
   // (the table's first two: porosity and permeability, both needed)
   if (found && !(given[0] && given[1])) {
     error = std::string("a saturated soil needs both porosity and permeability (missing: ") +
-        (given[0] ? "permeability" : "porosity") + ")";
+        (given[0] ? "permeability" : given[1] ? "porosity" : "porosity and permeability") + ")";
     return false;
   }
   words = rest;

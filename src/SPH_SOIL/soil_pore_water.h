@@ -15,6 +15,10 @@
 
    Words on a soil material line, after the model's parameters, in any order:
      porosity n  permeability k  [water_density rho_w]  [water_modulus K_w]
+     [permeability_law constant|kozeny_carman]
+   kozeny_carman: k follows the porosity, k(n) = k n^3 / (1 - n)^2 / (n0^3 / (1 - n0)^2)
+   (Kozeny 1927, Carman 1937), so that a dilating soil drains faster and a contracting one
+   slower; n from the particle's density, its grains incompressible and kept.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SOIL_PORE_WATER_H
@@ -28,11 +32,15 @@ namespace SPHSoil {
 // g_n (m/s^2): hydraulic conductivities are measured under it (SI units)
 constexpr double STANDARD_GRAVITY = 9.80665;
 
+// how the hydraulic conductivity follows the porosity
+enum class PermeabilityLaw { CONSTANT, KOZENY_CARMAN };
+
 struct PoreWater {
-  double porosity = 0.0;                   // n, in (0, 1)
+  double porosity = 0.0;                   // n, in (0, 1): at the material's rho0
   double conductivity = 0.0;               // hydraulic conductivity k (m/s), >= 0
   double water_density = DEFAULT_DENSITY;  // rho_w (kg/m^3)
   double water_modulus = DEFAULT_MODULUS;  // K_w (Pa)
+  PermeabilityLaw law = PermeabilityLaw::CONSTANT;
 
   static constexpr double DEFAULT_DENSITY = 1000.0;
   static constexpr double DEFAULT_MODULUS = 2.2e9;
@@ -44,6 +52,24 @@ struct PoreWater {
   // the diffusivity of the pore pressure in a rigid skeleton, mobility K_w / n (m^2/s): the
   // fastest the pore pressure spreads, which bounds an explicit time step
   double diffusivity() const { return mobility() * storage_modulus(); }
+
+  // the porosity at density rho = density_ratio rho0: the grains are incompressible and stay
+  // with the particle, (1 - n) / rho constant
+  double porosity_at(double density_ratio) const { return 1.0 - (1.0 - porosity) * density_ratio; }
+  // k at density ratio rho / rho0 over k at rho0: 1 for a constant k; Kozeny-Carman's
+  // n^3 / (1 - n)^2 over its value at n0, 0 where the pores have closed (n <= 0)
+  double conductivity_factor(double density_ratio) const
+  {
+    if (law == PermeabilityLaw::CONSTANT) return 1.0;
+    const double n = porosity_at(density_ratio);
+    if (n <= 0.0) return 0.0;
+    const double solid = 1.0 - n, solid0 = 1.0 - porosity;
+    return (n * n * n) / (porosity * porosity * porosity) * (solid0 * solid0) / (solid * solid);
+  }
+  // whether k changes with the density
+  bool variable_conductivity() const { return law != PermeabilityLaw::CONSTANT; }
+  // the names of the laws, for messages
+  static std::string law_names();
 
   // the keywords and their values, taken out of `words` (the rest stays, in order). `found`:
   // whether there was any. False with the reason (naming the keyword, the value and the

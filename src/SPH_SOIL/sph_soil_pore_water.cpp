@@ -16,6 +16,7 @@
 #include "sph_soil_offenders.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -25,7 +26,7 @@ using namespace SPHSoil;
 constexpr double SPHSoilPoreWater::DRAINED;
 
 SPHSoilPoreWater::SPHSoilPoreWater(LAMMPS *lmp, Pair *owner) :
-    Pointers(lmp), owner(owner), avec(nullptr), saturated(false), water(false), exchange(NONE)
+    Pointers(lmp), owner(owner), avec(nullptr), saturated(false), water(false), variable(false), exchange(NONE)
 {
 }
 
@@ -38,7 +39,9 @@ void SPHSoilPoreWater::init(const std::vector<SoilMaterial> &materials,
   const int ntypes = (int) materials.size() - 1;
   mobility_of_type.assign(ntypes + 1, 0.0);
   water_density_of_type.assign(ntypes + 1, 0.0);
-  saturated = water = false;
+  water_of_type.assign(ntypes + 1, PoreWater());
+  density_of_type.assign(ntypes + 1, 0.0);
+  saturated = water = variable = false;
   int first_saturated = 0;
   for (int t = 1; t <= ntypes; t++) {
     if (!has_material[t]) continue;
@@ -52,6 +55,9 @@ void SPHSoilPoreWater::init(const std::vector<SoilMaterial> &materials,
     if (!m.saturated) continue;
     mobility_of_type[t] = m.pore_water.mobility();
     water_density_of_type[t] = m.pore_water.water_density;
+    water_of_type[t] = m.pore_water;
+    density_of_type[t] = m.density;
+    variable = variable || m.pore_water.variable_conductivity();
     if (!saturated) first_saturated = t;
     saturated = true;
     // two saturated soils hold two waters: legal (layers of other fluids), most likely a typo
@@ -113,8 +119,14 @@ struct Flow {
   int dimension;
   template <class Kernel> void operator()() const
   {
-    if (dimension == 2) water->flow_sums<2, Kernel>(packed, list);
-    else water->flow_sums<3, Kernel>(packed, list);
+    const bool per_atom = water->variable_conductivity();
+    if (dimension == 2) {
+      if (per_atom) water->flow_sums<2, Kernel, true>(packed, list);
+      else water->flow_sums<2, Kernel, false>(packed, list);
+    } else {
+      if (per_atom) water->flow_sums<3, Kernel, true>(packed, list);
+      else water->flow_sums<3, Kernel, false>(packed, list);
+    }
   }
 };
 }    // namespace
@@ -138,7 +150,7 @@ void SPHSoilPoreWater::flow(const double *packed, const NeighbourList &list, Ker
    particle holds the pressure of the water behind it, the others no water.
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION, class Kernel>
+template <int DIMENSION, class Kernel, bool PER_ATOM>
 void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list)
 {
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
@@ -148,19 +160,25 @@ void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list
   double *flow = avec->pore_flow;
   memset(flow, 0, sizeof(double) * (newton_pair ? nall : nlocal));
   inflow.assign(nlocal, 0.0);
-  const double *mobility = mobility_of_type.data();
+  // each atom's mobility: its type's, or (PER_ATOM) at its density where k follows the porosity
+  if (PER_ATOM) {
+    atom_mobility.resize(nall);
+    for (int i = 0; i < nall; i++)
+      atom_mobility[i] = mobility_at(type[i], packed[(size_t) i * PACKED + P_RHO]);
+  }
+  const double *mobility = PER_ATOM ? atom_mobility.data() : mobility_of_type.data();
   const double *water_density = water_density_of_type.data();
   double gravity[3];
   SPHSoilFixes::gravity_sum(gravity_fixes, gravity);
   const int *partners = list.partner_data();
 
   for (int i = 0; i < nlocal; i++) {
-    const double lambda_i = mobility[type[i]];
+    const double lambda_i = mobility[PER_ATOM ? i : type[i]];
     if (lambda_i == 0.0) continue;
     const double *pi = packed + (size_t) i * PACKED;
     for (int jj = list.first(i); jj < list.end(i); jj++) {
       const int j = partners[jj];
-      const double lambda_j = mobility[type[j]];
+      const double lambda_j = mobility[PER_ATOM ? j : type[j]];
       double lambda_ij, rho_w;
       if (lambda_i > 0.0 && lambda_j > 0.0) {
         lambda_ij = harmonic_mobility(lambda_i, lambda_j);
@@ -186,6 +204,21 @@ void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list
       else if (lambda_i == DRAINED && j < nlocal) inflow[j] -= pi[P_VOLUME] * pj[P_VOLUME] * term;
     }
   }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double SPHSoilPoreWater::largest_diffusivity(int groupbit) const
+{
+  const int *type = atom->type, *mask = atom->mask;
+  const double *rho = atom->rho;
+  double largest = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int t = type[i];
+    if (!(mask[i] & groupbit) || mobility_of_type[t] <= 0.0) continue;
+    largest = std::max(largest, mobility_at(t, rho[i]) * water_of_type[t].storage_modulus());
+  }
+  return largest;
 }
 
 /* ---------------------------------------------------------------------- */

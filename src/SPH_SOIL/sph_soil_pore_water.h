@@ -4,7 +4,8 @@
    Everything about saturated soil on the LAMMPS side, in one unit that the pair
    style owns (the physics: soil_pore_water.h, doc/theory.rst section 7):
    - per atom type, the mobility k / gamma_w of a saturated soil, a drained
-     wall's mark, and the pore water's density;
+     wall's mark, and the pore water's density; per atom, the mobility at its
+     density where k follows the porosity (permeability_law kozeny_carman);
    - the pore pressure of the ghosts, every step before the pair loop packs the
      total stress (the atom style sends it at reneighbouring only, so that runs
      of dry soil do not carry it);
@@ -42,6 +43,12 @@ class SPHSoilPoreWater : protected Pointers {
   bool flows() const { return saturated; }
   // whether some type is free water
   bool free_water() const { return water; }
+  // whether some saturated soil's k follows its porosity (the time step then follows the
+  // particles' densities: largest_diffusivity())
+  bool variable_conductivity() const { return variable; }
+  // the largest diffusivity k K_w / (gamma_w n) of owned atoms of `mask` (this rank's) at their
+  // densities, 0 without saturated soil
+  double largest_diffusivity(int groupbit) const;
 
   // the ghosts' pore pressure, from their owners (collective)
   void share_pressures();
@@ -49,7 +56,8 @@ class SPHSoilPoreWater : protected Pointers {
   // (soil_packed_rows.h: positions, h, volumes) and the pair list; collective
   void flow(const double *packed, const SPHSoil::NeighbourList &list, SPHSoil::KernelKind kernel,
             int dimension);
-  template <int DIMENSION, class Kernel>
+  // (PER_ATOM: each atom's mobility at its density, a permeability law; else its type's)
+  template <int DIMENSION, class Kernel, bool PER_ATOM>
   void flow_sums(const double *packed, const SPHSoil::NeighbourList &list);
 
   // the pore water volume per unit time that owned atom i took in from drained partners (drained
@@ -73,10 +81,20 @@ class SPHSoilPoreWater : protected Pointers {
  private:
   class Pair *owner;
   class AtomVecSPHSoil *avec;
-  bool saturated, water;
+  bool saturated, water, variable;
   enum Exchange { NONE, PRESSURE, FLOW } exchange;
   std::vector<double> mobility_of_type;         // k / gamma_w; DRAINED; 0: no pore water
   std::vector<double> water_density_of_type;    // rho_w of a saturated soil
+  std::vector<SPHSoil::PoreWater> water_of_type;  // a saturated soil's pore water
+  std::vector<double> density_of_type;          // a saturated soil's rho0
+  std::vector<double> atom_mobility;            // owned and ghost atoms' mobility this step
+  // the mobility of atom i at density rho (the type's, where k is constant)
+  double mobility_at(int type, double rho) const
+  {
+    const double lambda = mobility_of_type[type];
+    if (lambda <= 0.0 || !water_of_type[type].variable_conductivity()) return lambda;
+    return lambda * water_of_type[type].conductivity_factor(rho / density_of_type[type]);
+  }
   std::vector<class Fix *> gravity_fixes;       // their 'gvec': the water's weight
   std::vector<double> inflow;                   // drained_inflow() of the owned atoms
 };

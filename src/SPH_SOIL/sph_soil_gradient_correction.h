@@ -1,0 +1,58 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   SPH_SOIL package for LAMMPS: the gradient correction of pair_style sph/soil
+   (pair_style ... gradient_correction yes; the physics: soil_gradient_correction.h,
+   doc/theory.rst 2.6).
+
+   Every evaluation, before the pair loop: each owned atom's kernel first moment C_i from the
+   pair list (plain partners with their volumes, a mirror wall particle's image with its mass at
+   the soil's density), the ghosts' shares returned to their owners; its correction factor; the
+   factors sent to the ghosts; the packed rows' stress multiplied by them. After the loop the
+   pair style divides each atom's own velocity gradient and density rate by C_i through
+   factor(i). Wall particles keep a factor 1 (their kernels are cut by the wall). Its
+   communication goes through the pair style's pack/unpack functions.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_SPH_SOIL_GRADIENT_CORRECTION_H
+#define LMP_SPH_SOIL_GRADIENT_CORRECTION_H
+
+#include "pointers.h"
+#include "soil_kernels.h"
+#include "soil_neighbours.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class SPHSoilGradientCorrection : protected Pointers {
+ public:
+  // `owner` is the pair style whose communication carries the moments and the factors
+  SPHSoilGradientCorrection(class LAMMPS *, class Pair *owner);
+
+  // the factors of the owned and ghost atoms (collective), from the packed rows (soil_packed_rows.h:
+  // positions, h, volumes, masses, densities) and the pair list; `wall_kind` per type
+  // (SPHSoil::NeighbourKind); then the packed rows' stress multiplied by them
+  void correct(double *packed, const SPHSoil::NeighbourList &list, const int *wall_kind,
+               SPHSoil::KernelKind kernel, int dimension);
+  template <int DIMENSION, class Kernel>
+  void moment_sums(const double *packed, const SPHSoil::NeighbourList &list, const int *wall_kind);
+
+  // owned or ghost atom i's factor at the last correct()
+  double factor(int i) const { return factors[i]; }
+
+  // the pair style's communication, while this unit uses it
+  bool communicating() const { return exchange != NONE; }
+  int pack_forward_comm(int n, int *list, double *buf);
+  void unpack_forward_comm(int n, int first, double *buf);
+  int pack_reverse_comm(int n, int first, double *buf);
+  void unpack_reverse_comm(int n, int *list, double *buf);
+
+ private:
+  class Pair *owner;
+  enum Exchange { NONE, MOMENT, FACTOR } exchange;
+  std::vector<double> moments;    // D C_i while summed, then C_i (owned)
+  std::vector<double> factors;    // owned and ghost atoms
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
