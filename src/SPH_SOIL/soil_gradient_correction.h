@@ -10,10 +10,12 @@
    (twice the error where the buoyant weight is half the total). With pair_style sph/soil
    gradient_correction yes, each particle's stress enters the pair sums as sigma_i / C_i and its
    own velocity gradient and density rate are divided by C_i (the scalar form of Bonet & Lok's
-   correction, doc/theory.rst 2.6): the force of a pair stays antisymmetric, momentum is still
+   correction, doc/theory.rst 2.7): the force of a pair stays antisymmetric, momentum is still
    conserved pair by pair, and the sums are exact for a linear field on any lattice of full
-   kernels. Where the kernel is truncated (a free surface, C_i near 1/2) dividing by C_i would
-   amplify the plain sum: the correction fades out between C_i = FADE_END and FADE_START.
+   kernels. Where the kernel is truncated (a free surface: C_i = 0.64 on a square lattice at
+   h = 1.2 d) dividing by C_i would amplify the plain sum, which stands there for a boundary
+   condition rather than a gradient: the correction fades out between C_i = FADE_END and
+   FADE_START.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SOIL_GRADIENT_CORRECTION_H
@@ -22,7 +24,7 @@
 namespace SPHSoil {
 
 // below FADE_START the kernel is taken as truncated: the correction fades linearly to none at
-// FADE_END (a particle one row below a free surface has C ~ 0.8 with h = 1.2 d)
+// FADE_END (on a square lattice at h = 1.2 d: C = 0.64 on a free surface, 0.96 one row below)
 constexpr double GRADIENT_FADE_START = 0.9;
 constexpr double GRADIENT_FADE_END = 0.8;
 
