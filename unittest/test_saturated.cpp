@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace SPHSoilTesting;
@@ -106,6 +107,48 @@ TEST_F(Saturated, SubmergedLayerCarriesItsBuoyantWeight)
   EXPECT_NEAR(equal("base_p"), equal("p_expected"), 0.025 * equal("p_expected"));
   EXPECT_NEAR(equal("base_s"), equal("s_expected"), -0.03 * equal("s_expected"));
   EXPECT_LT(equal("largest_speed"), 1e-5);
+}
+
+// Free water in a tank of mirror walls (a floor, smooth sides; the multiphase form): a wall
+// particle's image takes the wall particle's own volume, so that walls set up with a soil's mass
+// and density hold the water exactly as walls of the water's do. (With the image's volume m_w /
+// rho_water, walls of twice the water's mass pushed it with twice its pressure, and the water by
+// them went unstable; doc/theory.rst 4.3.)
+TEST_F(Saturated, WallsOfAnyMassHoldFreeWaterAlike)
+{
+  auto tank = [&](const std::string &wall_density) {
+    HIDE_OUTPUT([&] {
+      command("clear");
+      command("units si");
+      for (const auto &line : std::vector<std::string>{
+               "dimension 2", "boundary f f p", "atom_style sph/soil", "atom_modify map array",
+               "lattice sq 0.0025 origin 0.5 0.5 0",
+               "region box block -0.0125 0.1125 -0.0125 0.1 -0.001 0.001 units box",
+               "create_box 3 box", "region water block 0 0.05 0 0.04 INF INF units box",
+               "region floor block -0.0075 0.0575 -0.0075 0 INF INF units box",
+               "region left block -0.0075 0 0 0.06 INF INF units box",
+               "region right block 0.05 0.0575 0 0.06 INF INF units box",
+               "create_atoms 1 region water", "create_atoms 2 region floor",
+               "create_atoms 3 region left", "create_atoms 3 region right", "group water type 1",
+               "group walls type 2 3", "group floor region floor", "group left region left",
+               "group right region right",
+               "sph_soil/set walls mass $(" + wall_density + "*0.0025^2) h 0.003 density " + wall_density,
+               "sph_soil/set floor wall 0 0 0 0 1 0", "sph_soil/set left wall 0 0 0 1 0 0",
+               "sph_soil/set right wall 0.05 0 0 -1 0 0",
+               "variable rho atom 1000*(1+1000*9.81*(0.04-y)/2e6)",
+               "variable m atom v_rho*0.0025^2",
+               "sph_soil/set water h 0.003 density v_rho mass v_m", "pair_style sph/soil",
+               "pair_coeff 1 1 water 1000 2e6", "pair_coeff 2 2 wall", "pair_coeff 3 3 wall freeslip",
+               "fix down water gravity 9.81 vector 0 -1 0", "fix integrate water sph/soil cfl 0.1",
+               "thermo 0", "run 1000 post no"})
+        command(line);
+    });
+    return gather_state(lmp);
+  };
+  const auto light = tank("1000");
+  const auto heavy = tank("2000");
+  // the water's positions, velocities and pressures (the state's columns x to vz, pore_pressure)
+  expect_same_state(heavy, light, 1e-9, 1e-12, {1, 2, 4, 5, 30});
 }
 
 // examples/saturated/in.quick: upward seepage through a 0.1 m layer of sand (rho_sat 2000, so that
