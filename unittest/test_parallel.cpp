@@ -289,13 +289,15 @@ TEST_F(Parallel, SoilAndWaterWithMigrationAndBalancing)
     command("velocity all set v_vx 1.0 NULL units box");
     command("write_data saturated.data");
   });
-  expect_same_on_one_rank(
-      {"units si", "dimension 2", "atom_style sph/soil", "atom_modify map array",
-       "read_data saturated.data", "group soil type 1",
-       "variable pore atom 300.0+100.0*sin(400*x)*cos(300*y)", "sph_soil/set soil pore_pressure v_pore",
-       "pair_style sph/soil gradient_correction yes",
-       "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 porosity 0.4 permeability 1e-4 "
-       "water_modulus 2e7",
-       "pair_coeff 2 2 water 1000 2e6", "fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin",
-       "fix balance all balance 100 1.0 shift xy 10 1.0", "thermo 0", "run 1500 post no"});
+  std::vector<std::string> run = {"units si", "dimension 2", "atom_style sph/soil",
+                                  "atom_modify map array", "read_data saturated.data",
+                                  "group soil type 1",
+                                  "variable pore atom 300.0+100.0*sin(400*x)*cos(300*y)",
+                                  "sph_soil/set soil pore_pressure v_pore"};
+  const auto pair = soil_and_water_pair_commands("pair_style sph/soil gradient_correction yes");
+  run.insert(run.end(), pair.begin(), pair.end());
+  run.insert(run.end(), {"fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin",
+                         "fix balance all balance 100 1.0 shift xy 10 1.0", "thermo 0",
+                         "run 1500 post no"});
+  expect_same_on_one_rank(run);
 }

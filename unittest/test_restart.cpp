@@ -173,11 +173,7 @@ TEST_F(Restart, AnotherFixIDAndAFileWrittenDuringARunContinueExactly)
 // travel in the file; the run continues exactly
 TEST_F(Restart, SaturatedSoilAndWaterContinueExactly)
 {
-  commands(soil_and_water_patch_commands());
-  commands({"pair_style sph/soil gradient_correction yes",
-            "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 porosity 0.4 permeability 1e-4 "
-            "water_modulus 2e7",
-            "pair_coeff 2 2 water 1000 2e6"});
+  commands(soil_and_water_patch_commands("pair_style sph/soil gradient_correction yes"));
   commands({"variable vx atom 0.02*sin(2*PI*y/0.16)", "velocity all set v_vx NULL NULL units box",
             "neighbor 0.002 bin", "thermo 0", "fix integrate all sph/soil cfl 0.1",
             "run 50 post no", "write_restart saturated.restart", "run 100 post no"});

@@ -171,11 +171,9 @@ TEST_F(SoilPhysics, GradientCorrectionConservesMomentum)
     HIDE_OUTPUT([&] {
       command("clear");
       command("units si");
-      for (const auto &line : soil_and_water_patch_commands()) command(line);
-      command("pair_style sph/soil gradient_correction " + correction);
-      command("pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 porosity 0.4 "
-              "permeability 1e-4 water_modulus 2e7");
-      command("pair_coeff 2 2 water 1000 2e6");
+      for (const auto &line :
+           soil_and_water_patch_commands("pair_style sph/soil gradient_correction " + correction))
+        command(line);
       command("variable vx atom 0.02*sin(2*PI*y/0.16)");
       command("velocity all set v_vx NULL NULL units box");
       command("fix integrate all sph/soil cfl 0.1");

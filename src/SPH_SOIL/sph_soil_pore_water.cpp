@@ -38,7 +38,6 @@ void SPHSoilPoreWater::init(const std::vector<SoilMaterial> &materials,
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int ntypes = (int) materials.size() - 1;
   mobility_of_type.assign(ntypes + 1, 0.0);
-  water_density_of_type.assign(ntypes + 1, 0.0);
   water_of_type.assign(ntypes + 1, PoreWater());
   density_of_type.assign(ntypes + 1, 0.0);
   saturated = water = variable = false;
@@ -54,18 +53,17 @@ void SPHSoilPoreWater::init(const std::vector<SoilMaterial> &materials,
     }
     if (!m.saturated) continue;
     mobility_of_type[t] = m.pore_water.mobility();
-    water_density_of_type[t] = m.pore_water.water_density;
     water_of_type[t] = m.pore_water;
     density_of_type[t] = m.density;
     variable = variable || m.pore_water.variable_conductivity();
     if (!saturated) first_saturated = t;
     saturated = true;
     // two saturated soils hold two waters: legal (layers of other fluids), most likely a typo
-    if (m.pore_water.water_density != water_density_of_type[first_saturated] && comm->me == 0)
+    if (m.pore_water.water_density != water_of_type[first_saturated].water_density && comm->me == 0)
       error->warning(FLERR,
                      "Pair sph/soil: the saturated soils of types {} and {} have pore water of "
                      "densities {} and {}; the flow between them takes their mean",
-                     first_saturated, t, water_density_of_type[first_saturated],
+                     first_saturated, t, water_of_type[first_saturated].water_density,
                      m.pore_water.water_density);
   }
   // a hydraulic conductivity is measured under the standard gravity g_n = 9.80665 m/s^2
@@ -167,7 +165,7 @@ void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list
       atom_mobility[i] = mobility_at(type[i], packed[(size_t) i * PACKED + P_RHO]);
   }
   const double *mobility = PER_ATOM ? atom_mobility.data() : mobility_of_type.data();
-  const double *water_density = water_density_of_type.data();
+  const PoreWater *pore = water_of_type.data();
   double gravity[3];
   SPHSoilFixes::gravity_sum(gravity_fixes, gravity);
   const int *partners = list.partner_data();
@@ -182,13 +180,13 @@ void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list
       double lambda_ij, rho_w;
       if (lambda_i > 0.0 && lambda_j > 0.0) {
         lambda_ij = harmonic_mobility(lambda_i, lambda_j);
-        rho_w = 0.5 * (water_density[type[i]] + water_density[type[j]]);
+        rho_w = 0.5 * (pore[type[i]].water_density + pore[type[j]].water_density);
       } else if (lambda_i > 0.0 && lambda_j == DRAINED) {
         lambda_ij = 2.0 * lambda_i;
-        rho_w = water_density[type[i]];
+        rho_w = pore[type[i]].water_density;
       } else if (lambda_i == DRAINED && lambda_j > 0.0) {
         lambda_ij = 2.0 * lambda_j;
-        rho_w = water_density[type[j]];
+        rho_w = pore[type[j]].water_density;
       } else {
         continue;
       }

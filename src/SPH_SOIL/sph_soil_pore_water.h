@@ -4,7 +4,7 @@
    Everything about saturated soil on the LAMMPS side, in one unit that the pair
    style owns (the physics: soil_pore_water.h, doc/theory.rst section 7):
    - per atom type, the mobility k / gamma_w of a saturated soil, a drained
-     wall's mark, and the pore water's density; per atom, the mobility at its
+     wall's mark, and the pore water (its density, its permeability law); per atom, the mobility at its
      density where k follows the porosity (permeability_law kozeny_carman);
    - the pore pressure of the ghosts, every step before the pair loop packs the
      total stress (the atom style sends it at reneighbouring only, so that runs
@@ -24,7 +24,6 @@
 #include "soil_neighbours.h"
 
 #include <vector>
-
 
 namespace LAMMPS_NS {
 
@@ -46,8 +45,8 @@ class SPHSoilPoreWater : protected Pointers {
   // whether some saturated soil's k follows its porosity (the time step then follows the
   // particles' densities: largest_diffusivity())
   bool variable_conductivity() const { return variable; }
-  // the largest diffusivity k K_w / (gamma_w n) of owned atoms of `mask` (this rank's) at their
-  // densities, 0 without saturated soil
+  // the largest diffusivity k K_w / (gamma_w n) of this rank's owned atoms in group
+  // `groupbit`, at their densities; 0 without saturated soil
   double largest_diffusivity(int groupbit) const;
 
   // the ghosts' pore pressure, from their owners (collective)
@@ -84,8 +83,7 @@ class SPHSoilPoreWater : protected Pointers {
   bool saturated, water, variable;
   enum Exchange { NONE, PRESSURE, FLOW } exchange;
   std::vector<double> mobility_of_type;         // k / gamma_w; DRAINED; 0: no pore water
-  std::vector<double> water_density_of_type;    // rho_w of a saturated soil
-  std::vector<SPHSoil::PoreWater> water_of_type;  // a saturated soil's pore water
+  std::vector<SPHSoil::PoreWater> water_of_type;  // a saturated soil's pore water (its rho_w, law)
   std::vector<double> density_of_type;          // a saturated soil's rho0
   std::vector<double> atom_mobility;            // owned and ghost atoms' mobility this step
   // the mobility of atom i at density rho (the type's, where k is constant)

@@ -64,11 +64,23 @@ inline std::vector<std::string> periodic_patch_commands(const std::string &disor
   return commands;
 }
 
+// The pair style of soil_and_water_patch_commands() (`pair_style`: its line) and its two
+// materials: a saturated sand (type 1) and free water (type 2)
+inline std::vector<std::string> soil_and_water_pair_commands(
+    const std::string &pair_style = "pair_style sph/soil")
+{
+  return {pair_style,
+          "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 porosity 0.4 permeability "
+          "1e-4 water_modulus 2e7",
+          "pair_coeff 2 2 water 1000 2e6"};
+}
+
 // The periodic patch (periodic_patch_commands()) as saturated soil below y = 8 cm (type 1, group
 // soil, its pore pressure varying so that the pore water flows) and free water above it (type 2,
-// group water, at rest at its reference density), with pair_style sph/soil and both materials;
+// group water, at rest at its reference density), with soil_and_water_pair_commands(pair_style);
 // no integrator, no velocity
-inline std::vector<std::string> soil_and_water_patch_commands()
+inline std::vector<std::string> soil_and_water_patch_commands(
+    const std::string &pair_style = "pair_style sph/soil")
 {
   auto commands = periodic_patch_commands();
   for (auto &line : commands)
@@ -77,11 +89,10 @@ inline std::vector<std::string> soil_and_water_patch_commands()
       "region upper block INF INF 8 INF INF INF", "set region upper type 2", "group water type 2",
       "group soil type 1", "variable pore atom 300.0+100.0*sin(400*x)*cos(300*y)",
       "sph_soil/set soil pore_pressure v_pore",
-      "sph_soil/set water density 1000 mass 0.1 stress 0 0 0 0 0 0", "pair_style sph/soil",
-      "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 porosity 0.4 permeability 1e-4 "
-      "water_modulus 2e7",
-      "pair_coeff 2 2 water 1000 2e6"};
+      "sph_soil/set water density 1000 mass 0.1 stress 0 0 0 0 0 0"};
   commands.insert(commands.end(), water.begin(), water.end());
+  const auto pair = soil_and_water_pair_commands(pair_style);
+  commands.insert(commands.end(), pair.begin(), pair.end());
   return commands;
 }
 
