@@ -46,6 +46,7 @@ STYLES = {'sph_soil': ('in.bench_sph_soil', []),
           'sph_soil_saturated': ('in.bench_sph_soil', ['-var', 'material', 'saturated']),
           'sph_soil_water': ('in.bench_sph_soil', ['-var', 'material', 'water']),
           'sph_soil_corrected': ('in.bench_sph_soil', ['-var', 'correction', 'yes']),
+          'sph_soil_corrected_full': ('in.bench_sph_soil', ['-var', 'correction', 'full']),
           'sph_taitwater': ('in.bench_taitwater', []), 'smd_ulsph': ('in.bench_ulsph', [])}
 
 

@@ -141,7 +141,7 @@ std::vector<BadInput> cases()
   error("PairContinuity", "patch", {}, "pair_style sph/soil continuity density",
         "Illegal pair_style sph/soil continuity density: must be volume or mass");
   error("PairGradientCorrection", "patch", {}, "pair_style sph/soil gradient_correction 1",
-        "Illegal pair_style sph/soil gradient_correction 1: must be yes or no");
+        "Illegal pair_style sph/soil gradient_correction 1: must be no, yes or full");
   error("PairViscosityH0Negative", "patch", {}, "pair_style sph/soil viscosity_h0 -0.001",
         "Illegal pair_style sph/soil viscosity_h0 -0.001: must be >= 0");
   error("PairKernel", "patch", {}, "pair_style sph/soil kernel gaussian",

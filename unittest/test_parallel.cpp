@@ -294,7 +294,8 @@ TEST_F(Parallel, SoilAndWaterWithMigrationAndBalancing)
                                   "group soil type 1",
                                   "variable pore atom 300.0+100.0*sin(400*x)*cos(300*y)",
                                   "sph_soil/set soil pore_pressure v_pore"};
-  const auto pair = soil_and_water_pair_commands("pair_style sph/soil gradient_correction yes");
+  // (the full correction: its factors and tensors travel to the ghosts and back)
+  const auto pair = soil_and_water_pair_commands("pair_style sph/soil gradient_correction full");
   run.insert(run.end(), pair.begin(), pair.end());
   run.insert(run.end(), {"fix integrate all sph/soil cfl 0.1", "neighbor 0.002 bin",
                          "fix balance all balance 100 1.0 shift xy 10 1.0", "thermo 0",

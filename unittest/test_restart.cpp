@@ -168,12 +168,12 @@ TEST_F(Restart, AnotherFixIDAndAFileWrittenDuringARunContinueExactly)
   expect_same_state(gather_state(lmp), uninterrupted);
 }
 
-// Saturated soil under free water, with the gradient correction: the pore pressure, its flow of
+// Saturated soil under free water, with the full gradient correction: the pore pressure, its flow of
 // the last step, the materials with their pore water and the pair style's gradient_correction
 // travel in the file; the run continues exactly
 TEST_F(Restart, SaturatedSoilAndWaterContinueExactly)
 {
-  commands(soil_and_water_patch_commands("pair_style sph/soil gradient_correction yes"));
+  commands(soil_and_water_patch_commands("pair_style sph/soil gradient_correction full"));
   commands({"variable vx atom 0.02*sin(2*PI*y/0.16)", "velocity all set v_vx NULL NULL units box",
             "neighbor 0.002 bin", "thermo 0", "fix integrate all sph/soil cfl 0.1",
             "run 50 post no", "write_restart saturated.restart", "run 100 post no"});

@@ -162,7 +162,7 @@ TEST_F(SoilPhysics, SoilAndWaterConserveMassAndMomentum)
       ASSERT_DOUBLE_EQ(avec->pore_pressure[i], 2e6 * (atom->rho[i] / 1000.0 - 1.0));
 }
 
-// pair_style sph/soil gradient_correction yes (doc/theory.rst 2.7): each particle's stress over
+// pair_style sph/soil gradient_correction yes or full (doc/theory.rst 2.7): each particle's stress over
 // its kernel's first moment keeps every pair's force antisymmetric, so that saturated soil and free
 // water still conserve mass and momentum to round-off; and the run is not the uncorrected one
 TEST_F(SoilPhysics, GradientCorrectionConservesMomentum)
@@ -185,6 +185,8 @@ TEST_F(SoilPhysics, GradientCorrectionConservesMomentum)
     expect_mass_and_momentum_conserved(before, totals());
     return gather_state(lmp);
   };
+  // (full: the velocity gradient by the first-moment tensor too, which leaves the forces alone)
+  run("full");
   const auto corrected = run("yes");
   const auto plain = run("no");
   // (the state's stress columns: sxx to syz)

@@ -25,6 +25,7 @@
 #include "sph_soil_walls.h"
 #include "utils.h"
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
 
@@ -52,9 +53,9 @@ PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
   // the forces are pairwise and reach the ghosts (Newton's third law): x . f over owned and
   // ghost atoms is the virial (LAMMPS asks for it with newton on); pair by pair otherwise
   no_virial_fdotr_compute = 0;
-  // (the pore water sends one number per atom)
-  comm_forward = MAX(walls->forward_size(), 1);
-  comm_reverse = MAX(walls->reverse_size(), 1);
+  // (the pore water sends one number per atom, the gradient correction up to 16)
+  comm_forward = MAX(walls->forward_size(), 16);
+  comm_reverse = MAX(walls->reverse_size(), 16);
   skin_fix_id = "SPH_SOIL_SKIN_" + std::to_string(instance_me);
 }
 
@@ -97,14 +98,14 @@ void PairSPHSoil::set_defaults()
   artificial_stress_epsilon = SPHSoil::ARTIFICIAL_STRESS_EPSILON;
   free_slip = false;
   continuity_volume = true;
-  gradient_correction = false;
+  gradient_correction = CORRECTION_NONE;
   kernel = SPHSoil::KernelKind();
 }
 
 /* ----------------------------------------------------------------------
    pair_style sph/soil [alpha A] [beta B] [viscosity_h0 H] [wall noslip|freeslip]
                        [kernel cubic|wendland2] [artificial_stress epsilon]
-                       [continuity volume|mass] [gradient_correction yes|no]
+                       [continuity volume|mass] [gradient_correction no|yes|full]
 ------------------------------------------------------------------------- */
 
 void PairSPHSoil::settings(int narg, char **arg)
@@ -143,7 +144,16 @@ void PairSPHSoil::settings(int narg, char **arg)
       {"continuity",
        [&](const char *v) { continuity_volume = one_of_two("continuity", v, "volume", "mass"); }},
       {"gradient_correction",
-       [&](const char *v) { gradient_correction = one_of_two("gradient_correction", v, "yes", "no"); }},
+       [&](const char *v) {
+         const char *names[3] = {"no", "yes", "full"};
+         const auto found = std::find_if(names, names + 3, [&](const char *n) { return strcmp(n, v) == 0; });
+         if (found == names + 3)
+           SPHSoilCompat::error_all(lmp, FLERR,
+                                    "Illegal pair_style sph/soil gradient_correction {}: must be "
+                                    "no, yes or full",
+                                    v);
+         gradient_correction = (int) (found - names);
+       }},
   };
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
@@ -231,8 +241,11 @@ void PairSPHSoil::init_style()
   pore_water->init(materials.all(), materials.set_flags());
   // free water: the momentum sum's multiphase form (see the header)
   multiphase = pore_water->free_water();
-  if (gradient_correction && !correction) correction.reset(new SPHSoilGradientCorrection(lmp, this));
-  if (!gradient_correction) correction.reset();
+  const bool full = gradient_correction == CORRECTION_FULL;
+  if (gradient_correction == CORRECTION_NONE || (correction && correction->full() != full))
+    correction.reset();
+  if (gradient_correction != CORRECTION_NONE && !correction)
+    correction.reset(new SPHSoilGradientCorrection(lmp, this, full));
   schedule = SPHSoilFixes::step_schedule(lmp);
   // the fix that keeps our list valid between LAMMPS's reneighbourings (created once, as
   // pair_granular creates its history fix)
@@ -379,7 +392,7 @@ void PairSPHSoil::write_restart_settings(FILE *fp)
 {
   const int format = RESTART_FORMAT;
   const int flags[4] = {free_slip ? 1 : 0, kernel.index, continuity_volume ? 1 : 0,
-                        gradient_correction ? 1 : 0};
+                        gradient_correction};
   const double numbers[4] = {viscosity_alpha, viscosity_beta, viscosity_h0,
                              artificial_stress_epsilon};
   fwrite(&format, sizeof(int), 1, fp);
@@ -411,7 +424,7 @@ void PairSPHSoil::read_restart_settings(FILE *fp)
   free_slip = flags[0] != 0;
   kernel.index = flags[1];
   continuity_volume = flags[2] != 0;
-  gradient_correction = flags[3] != 0;
+  gradient_correction = flags[3];
   viscosity_alpha = numbers[0];
   viscosity_beta = numbers[1];
   viscosity_h0 = numbers[2];

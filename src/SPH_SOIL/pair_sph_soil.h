@@ -102,7 +102,10 @@ class PairSPHSoil : public Pair {
   std::unique_ptr<class SPHSoilPoreWater> pore_water;
   // the first-moment correction of the gradients (sph_soil_gradient_correction.h), or none
   std::unique_ptr<class SPHSoilGradientCorrection> correction;
-  bool gradient_correction;    // pair_style ... gradient_correction yes
+  // pair_style ... gradient_correction no, yes (scalar) or full (the velocity gradient by the
+  // first-moment tensor too): the restart file's flag
+  enum { CORRECTION_NONE = 0, CORRECTION_SCALAR = 1, CORRECTION_FULL = 2 };
+  int gradient_correction;
   double **sound_speed_ij;    // mean P-wave speed of a type pair
   double max_h;               // largest smoothing length at init
   class AtomVecSPHSoil *avec;
@@ -156,9 +159,9 @@ class PairSPHSoil : public Pair {
   std::vector<int> active_partners;    // the loop's: an atom's partners that end a step
   bool per_level() const { return schedule && schedule->per_level; }
   void pack_step_periods();
-  // (CORRECTED: with the gradient correction's factors; compiled apart, so that runs without it
-  // keep their cost)
-  template <int DIMENSION, bool CORRECTED> void unpack_sums();
+  // (CORRECTION: none, the gradient correction's factors, or those and its velocity gradient
+  // tensors; compiled apart, so that runs without it keep their cost)
+  template <int DIMENSION, int CORRECTION> void unpack_sums();
   // per owned and ghost atom: R (Voigt, the units of stress / rho^2) and 1 / w(d / h), w the
   // kernel's shape and d = (m / rho)^(1/D) the spacing: the pair's weight is
   // (W(r) / W(d))^4 = (w(r / h_ij) / w(d / h))^4, exact for two particles of the same d / h

@@ -11,6 +11,7 @@
 #include "memory.h"
 #include "neighbor.h"
 #include "soil_artificial_stress.h"
+#include "soil_gradient_correction.h"
 #include "soil_packed_rows.h"
 #include "soil_pair_terms.h"
 #include "soil_refine_split.h"
@@ -182,10 +183,20 @@ template <int DIMENSION, class Kernel, bool PHASES> void PairSPHSoil::pack_artif
   double **stress = avec->stress;
   const int *type = atom->type;
   const double *rho = atom->rho, *rmass = atom->rmass, *h = avec->smoothing_length;
+  const double *pore_pressure = pore_water->pressures() ? avec->pore_pressure : nullptr;
   for (int i = 0; i < nall; i++) {
     double *row = artificial + (size_t) i * ARTIFICIAL;
     if (type_artificial_stress[type[i]]) {
-      SPHSoil::artificial_stress<DIMENSION>(stress[i], rho[i], artificial_stress_epsilon,
+      // from the skeleton's tension that the momentum sum sees: a saturated soil's effective
+      // stress less its pore pressure where that compresses (an undrained block between plates
+      // has its effective stress in tension where the total is not, and a repulsion from the
+      // effective stress held it in a total tension that nothing else does); a suction is the
+      // water's tension, not the skeleton's, and a repulsion from it dilates the soil, whose
+      // suction grows: the undrained drawdown blew up that way (doc/theory.rst 2.5)
+      double total[6];
+      const double pore = pore_pressure ? std::max(pore_pressure[i], 0.0) : 0.0;
+      for (int k = 0; k < 6; k++) total[k] = stress[i][k] - (k < 3 ? pore : 0.0);
+      SPHSoil::artificial_stress<DIMENSION>(total, rho[i], artificial_stress_epsilon,
                                             row + A_STRESS);
       // (in the units of the packed stress: the multiphase form's is the stress itself)
       if (PHASES)
@@ -203,8 +214,10 @@ template <int DIMENSION, class Kernel, bool PHASES> void PairSPHSoil::pack_artif
    communication then brings the ghosts' shares to their owners)
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION, bool CORRECTED> void PairSPHSoil::unpack_sums()
+template <int DIMENSION, int CORRECTION> void PairSPHSoil::unpack_sums()
 {
+  constexpr bool CORRECTED = CORRECTION != CORRECTION_NONE;
+  constexpr bool FULL = CORRECTION == CORRECTION_FULL;
   // without Newton's third law for ghost pairs, ghost rows hold shares that their owners
   // compute themselves
   const int n = force->newton_pair ? atom->nlocal + atom->nghost : atom->nlocal;
@@ -218,15 +231,31 @@ template <int DIMENSION, bool CORRECTED> void PairSPHSoil::unpack_sums()
     for (int a = 0; a < D; a++) f[i][a] += sum[S_FORCE + a];
     // i's own gradients over its kernel's first moment (a ghost's share with its owner's factor)
     const double scale = CORRECTED ? correction->factor(i) : 1.0;
-    // the volume form sums V_j (v_ij . grad W) = -div v: the rate is rho_i times it
-    drho[i] += (volume_form ? rho[i] : 1.0) * scale * sum[S_DRHO<D>()];
-    // strain rate (Voigt) and spin (xy xz yz): the symmetric and antisymmetric parts
     const double *g = sum + S_GRADIENT<D>();
-    for (int a = 0; a < D; a++) strain_rate[i][a] += scale * g[a * D + a];
+    double corrected[D * D];
+    if (FULL) {
+      // by the moment tensors (soil_gradient_correction.h); the volume form's density rate
+      // from the corrected trace
+      const double *l = correction->velocity_correction(i);
+      SPHSoil::corrected_velocity_gradient<D>(g, l + 12, l, l + 6, corrected);
+      g = corrected;
+    }
+    // the volume form sums V_j (v_ij . grad W) = -div v: the rate is rho_i times it
+    if (FULL && volume_form) {
+      double divergence = 0.0;
+      for (int a = 0; a < D; a++) divergence += g[a * D + a];
+      drho[i] -= rho[i] * divergence;
+    } else {
+      drho[i] += (volume_form ? rho[i] : 1.0) * scale * sum[S_DRHO<D>()];
+    }
+    // strain rate (Voigt) and spin (xy xz yz): the symmetric and antisymmetric parts
+    const double gradient_scale = FULL ? 1.0 : scale;    // (full: L holds it)
+    for (int a = 0; a < D; a++) strain_rate[i][a] += gradient_scale * g[a * D + a];
     for (int a = 0; a < D; a++)
       for (int b = a + 1; b < D; b++) {
-        strain_rate[i][SPHSoil::voigt_index(a, b)] += 0.5 * scale * (g[a * D + b] + g[b * D + a]);
-        spin[i][a + b - 1] += 0.5 * scale * (g[a * D + b] - g[b * D + a]);
+        strain_rate[i][SPHSoil::voigt_index(a, b)] +=
+            0.5 * gradient_scale * (g[a * D + b] + g[b * D + a]);
+        spin[i][a + b - 1] += 0.5 * gradient_scale * (g[a * D + b] - g[b * D + a]);
       }
   }
 }
@@ -337,7 +366,8 @@ void PairSPHSoil::eval()
     pack_atoms<D, false, false>();
   walls->prepare(packed, neighbours, kernel, D, PHASES);
   // the stress of each atom over its kernel's first moment (after the walls have written theirs)
-  if (correction) correction->correct(packed, neighbours, wall_kind, kernel, D);
+  if (correction)
+    correction->correct(packed, neighbours, wall_kind, walls->slips(), avec->wall_normal, kernel, D);
   if (ARTIFICIAL_STRESS) pack_artificial_stress<D, Kernel, PHASES>();
   const int *const artificial_type = type_artificial_stress.data();
   const double *const in = packed;
@@ -484,10 +514,12 @@ void PairSPHSoil::eval()
     }
   }
 
-  if (correction)
-    unpack_sums<D, true>();
+  if (!correction)
+    unpack_sums<D, CORRECTION_NONE>();
+  else if (correction->full())
+    unpack_sums<D, CORRECTION_FULL>();
   else
-    unpack_sums<D, false>();
+    unpack_sums<D, CORRECTION_SCALAR>();
   // the pore water's flow: a loop of its own, so that runs of dry soil pay nothing for it
   if (pore_water->flows()) pore_water->flow(packed, neighbours, kernel, D);
 }

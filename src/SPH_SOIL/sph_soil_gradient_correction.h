@@ -8,8 +8,10 @@
    the soil's density), the ghosts' shares returned to their owners; its correction factor; the
    factors sent to the ghosts; the packed rows' stress multiplied by them. After the loop the
    pair style divides each atom's own velocity gradient and density rate by C_i through
-   factor(i). Wall particles keep a factor 1 (their kernels are cut by the wall). Its
-   communication goes through the pair style's pack/unpack functions.
+   factor(i). Wall particles keep a factor 1 (their kernels are cut by the wall). With `full`
+   (gradient_correction full) it also sums each atom's first-moment tensor and gives the velocity
+   gradient's correction, its inverse, through velocity_correction(i). Its communication goes
+   through the pair style's pack/unpack functions.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SPH_SOIL_GRADIENT_CORRECTION_H
@@ -26,18 +28,25 @@ namespace LAMMPS_NS {
 class SPHSoilGradientCorrection : protected Pointers {
  public:
   // `owner` is the pair style whose communication carries the moments and the factors
-  SPHSoilGradientCorrection(class LAMMPS *, class Pair *owner);
+  SPHSoilGradientCorrection(class LAMMPS *, class Pair *owner, bool full);
 
   // the factors of the owned and ghost atoms (collective), from the packed rows (soil_packed_rows.h:
   // positions, h, volumes, masses, densities) and the pair list; `wall_kind` per type
   // (SPHSoil::NeighbourKind); then the packed rows' stress multiplied by them
+  // `slips` per type (SPHSoil::WallSlipCode) and `wall_normal` per atom: the mirror walls'
   void correct(double *packed, const SPHSoil::NeighbourList &list, const int *wall_kind,
-               SPHSoil::KernelKind kernel, int dimension);
-  template <int DIMENSION, class Kernel>
-  void moment_sums(const double *packed, const SPHSoil::NeighbourList &list, const int *wall_kind);
+               const int *slips, double **wall_normal, SPHSoil::KernelKind kernel, int dimension);
+  template <int DIMENSION, class Kernel, bool FULL>
+  void moment_sums(const double *packed, const SPHSoil::NeighbourList &list, const int *wall_kind,
+                   const int *slips, double **wall_normal);
 
   // owned or ghost atom i's factor at the last correct()
   double factor(int i) const { return factors[i]; }
+  // with `full`: owned or ghost atom i's velocity gradient correction at the last correct():
+  // (M_p + M_i)^-1, M_p^-1 (Voigt) and the smooth walls' unit normal (or 0), for
+  // SPHSoil::corrected_velocity_gradient()
+  bool full() const { return full_tensor; }
+  const double *velocity_correction(int i) const { return &corrections[(size_t) i * 15]; }
 
   // the pair style's communication, while this unit uses it
   bool communicating() const { return exchange != NONE; }
@@ -48,9 +57,13 @@ class SPHSoilGradientCorrection : protected Pointers {
 
  private:
   class Pair *owner;
+  bool full_tensor;
   enum Exchange { NONE, MOMENT, FACTOR } exchange;
-  std::vector<double> moments;    // D C_i while summed, then C_i (owned)
-  std::vector<double> factors;    // owned and ghost atoms
+  std::vector<double> moments;        // D C_i while summed, then C_i (owned)
+  std::vector<double> tensors;        // with full_tensor: 15 sums per atom (see the .cpp)
+  std::vector<double> factors;        // owned and ghost atoms
+  std::vector<double> corrections;    // with full_tensor: 15 numbers per atom
+  void tensor_correction(int i, bool soil, double factor, int dimension);
 };
 
 }    // namespace LAMMPS_NS
