@@ -53,9 +53,9 @@ PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
   // the forces are pairwise and reach the ghosts (Newton's third law): x . f over owned and
   // ghost atoms is the virial (LAMMPS asks for it with newton on); pair by pair otherwise
   no_virial_fdotr_compute = 0;
-  // (the pore water sends one number per atom, the gradient correction up to 16)
-  comm_forward = MAX(walls->forward_size(), 16);
-  comm_reverse = MAX(walls->reverse_size(), 16);
+  // (the pore water sends one number per atom, the gradient correction up to its COMM_SIZE)
+  comm_forward = MAX(walls->forward_size(), SPHSoilGradientCorrection::COMM_SIZE);
+  comm_reverse = MAX(walls->reverse_size(), SPHSoilGradientCorrection::COMM_SIZE);
   skin_fix_id = "SPH_SOIL_SKIN_" + std::to_string(instance_me);
 }
 
@@ -145,13 +145,15 @@ void PairSPHSoil::settings(int narg, char **arg)
        [&](const char *v) { continuity_volume = one_of_two("continuity", v, "volume", "mass"); }},
       {"gradient_correction",
        [&](const char *v) {
+         // (in the order of CORRECTION_NONE, _SCALAR, _FULL)
          const char *names[3] = {"no", "yes", "full"};
-         const auto found = std::find_if(names, names + 3, [&](const char *n) { return strcmp(n, v) == 0; });
+         const auto found =
+             std::find_if(names, names + 3, [&](const char *n) { return strcmp(n, v) == 0; });
          if (found == names + 3)
            SPHSoilCompat::error_all(lmp, FLERR,
                                     "Illegal pair_style sph/soil gradient_correction {}: must be "
-                                    "no, yes or full",
-                                    v);
+                                    "{}, {} or {}",
+                                    v, names[0], names[1], names[2]);
          gradient_correction = (int) (found - names);
        }},
   };

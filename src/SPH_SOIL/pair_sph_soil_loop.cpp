@@ -236,8 +236,8 @@ template <int DIMENSION, int CORRECTION> void PairSPHSoil::unpack_sums()
     if (FULL) {
       // by the moment tensors (soil_gradient_correction.h); the volume form's density rate
       // from the corrected trace
-      const double *l = correction->velocity_correction(i);
-      SPHSoil::corrected_velocity_gradient<D>(g, l + 12, l, l + 6, corrected);
+      const auto l = correction->velocity_correction(i);
+      SPHSoil::corrected_velocity_gradient<D>(g, l.normal, l.full, l.plain, corrected);
       g = corrected;
     }
     // the volume form sums V_j (v_ij . grad W) = -div v: the rate is rho_i times it

@@ -19,11 +19,6 @@
 using namespace LAMMPS_NS;
 using namespace SPHSoil;
 
-// with the full correction, per atom: while summed, M over all partners, M_i over smooth wall
-// images (Voigt) and those images' normals by their share; then (M_p + M_i)^-1, M_p^-1 and the
-// unit normal
-static constexpr int FULL_TENSOR = 0, IMAGE_TENSOR = 6, IMAGE_NORMAL = 12, PER_ATOM = 15;
-
 SPHSoilGradientCorrection::SPHSoilGradientCorrection(LAMMPS *lmp, Pair *owner, bool full) :
     Pointers(lmp), owner(owner), full_tensor(full), exchange(NONE)
 {

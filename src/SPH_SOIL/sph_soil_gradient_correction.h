@@ -42,11 +42,23 @@ class SPHSoilGradientCorrection : protected Pointers {
 
   // owned or ghost atom i's factor at the last correct()
   double factor(int i) const { return factors[i]; }
-  // with `full`: owned or ghost atom i's velocity gradient correction at the last correct():
-  // (M_p + M_i)^-1, M_p^-1 (Voigt) and the smooth walls' unit normal (or 0), for
-  // SPHSoil::corrected_velocity_gradient()
+  // with `full`, per atom: while summed, M over all partners and M_i over smooth wall images
+  // (Voigt) and those images' normals by their share; then (M_p + M_i)^-1, M_p^-1 and the unit
+  // normal (or 0) in the same places
+  static constexpr int FULL_TENSOR = 0, IMAGE_TENSOR = 6, IMAGE_NORMAL = 12, PER_ATOM = 15;
+  // the numbers per atom of its exchanges, at most
+  static constexpr int COMM_SIZE = 1 + PER_ATOM;
   bool full() const { return full_tensor; }
-  const double *velocity_correction(int i) const { return &corrections[(size_t) i * 15]; }
+  // owned or ghost atom i's velocity gradient correction at the last correct(), for
+  // SPHSoil::corrected_velocity_gradient()
+  struct VelocityCorrection {
+    const double *full, *plain, *normal;
+  };
+  VelocityCorrection velocity_correction(int i) const
+  {
+    const double *c = &corrections[(size_t) i * PER_ATOM];
+    return {c + FULL_TENSOR, c + IMAGE_TENSOR, c + IMAGE_NORMAL};
+  }
 
   // the pair style's communication, while this unit uses it
   bool communicating() const { return exchange != NONE; }
@@ -60,9 +72,9 @@ class SPHSoilGradientCorrection : protected Pointers {
   bool full_tensor;
   enum Exchange { NONE, MOMENT, FACTOR } exchange;
   std::vector<double> moments;        // D C_i while summed, then C_i (owned)
-  std::vector<double> tensors;        // with full_tensor: 15 sums per atom (see the .cpp)
+  std::vector<double> tensors;        // with full_tensor: PER_ATOM sums per atom
   std::vector<double> factors;        // owned and ghost atoms
-  std::vector<double> corrections;    // with full_tensor: 15 numbers per atom
+  std::vector<double> corrections;    // with full_tensor: PER_ATOM numbers per atom
   void tensor_correction(int i, bool soil, double factor, int dimension);
 };
 
