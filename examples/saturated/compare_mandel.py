@@ -13,28 +13,25 @@ import sys
 
 import numpy as np
 
-# the example's material and geometry (in.mandel)
-K, NU = 1.5e6, 0.3            # drained bulk modulus (Pa), Poisson ratio of the skeleton
-K_W, N = 2.0e7, 0.4           # pore water's bulk modulus (Pa), porosity
-RHO_W, G_STD = 1000.0, 9.80665    # gamma_w = rho_w g: conductivities are measured under standard gravity
-A, B_HALF = 0.1, 0.05         # half-width, half-height (m)
-Q = 1.0e4                     # mean vertical stress under the plate (Pa)
+G_STD = 9.80665    # gamma_w = rho_w g: conductivities are measured under standard gravity
 
 
-def constants(k):
-    """Shear modulus, Skempton's B, undrained Poisson ratio and consolidation coefficient."""
-    shear = 3 * K * (1 - 2 * NU) / (2 * (1 + NU))
-    skempton = K_W / (K_W + N * K)                 # Biot's alpha = 1 (grains incompressible)
-    nu_u = (3 * NU + skempton * (1 - 2 * NU)) / (3 - skempton * (1 - 2 * NU))
-    mobility = k / (RHO_W * G_STD)                 # k / gamma_w (m^2 / (Pa s))
-    m_biot = K_W / N
+def constants(run):
+    """Shear modulus, Skempton's B, undrained Poisson ratio and consolidation coefficient of a
+    run's parameters (the header line of mandel.txt)."""
+    K, nu, n, K_w = run['K'], run['nu'], run['n'], run['K_w']
+    shear = 3 * K * (1 - 2 * nu) / (2 * (1 + nu))
+    skempton = K_w / (K_w + n * K)                 # Biot's alpha = 1 (grains incompressible)
+    nu_u = (3 * nu + skempton * (1 - 2 * nu)) / (3 - skempton * (1 - 2 * nu))
+    mobility = run['k'] / (run['rho_w'] * G_STD)   # k / gamma_w (m^2 / (Pa s))
+    m_biot = K_w / n
     c = mobility * m_biot * (K + 4 * shear / 3) / (K + m_biot + 4 * shear / 3)
     return shear, skempton, nu_u, c
 
 
-def roots(nu_u, count=400):
+def roots(nu, nu_u, count=400):
     """The roots of tan(alpha) = (1 - nu) / (nu_u - nu) alpha, one in each (n pi, n pi + pi/2)."""
-    slope = (1 - NU) / (nu_u - NU)
+    slope = (1 - nu) / (nu_u - nu)
     out = []
     for n in range(count):
         lo, hi = max(n * math.pi, 1e-9), n * math.pi + math.pi / 2 - 1e-12
@@ -51,26 +48,29 @@ def roots(nu_u, count=400):
 
 
 class Mandel:
-    def __init__(self, k):
-        self.shear, self.skempton, self.nu_u, self.c = constants(k)
-        self.alpha = roots(self.nu_u)
+    def __init__(self, run):
+        self.run = run
+        self.nu, self.a, self.b, self.q = run['nu'], run['a'], run['b'], run['q']
+        self.shear, self.skempton, self.nu_u, self.c = constants(run)
+        self.alpha = roots(self.nu, self.nu_u)
         s, co = np.sin(self.alpha), np.cos(self.alpha)
         self.weight_p = s / (self.alpha - s * co)
         self.weight_u = s * co / (self.alpha - s * co)
-        self.p0 = Q * self.skempton * (1 + self.nu_u) / 3      # undrained pore pressure
+        self.p0 = self.q * self.skempton * (1 + self.nu_u) / 3      # undrained pore pressure
 
     def unit(self, x, t):
         """Pore pressure and settlement for a unit step of the load at t = 0 (0 before)."""
         t = np.maximum(np.asarray(t, dtype=float), 0.0)
-        decay = np.exp(-np.outer(t, self.alpha ** 2) * self.c / A ** 2)
-        p = 2 * self.p0 / Q * decay @ (self.weight_p * (np.cos(self.alpha * x / A) - np.cos(self.alpha)))
-        u = B_HALF / self.shear * ((1 - NU) / 2 - (1 - self.nu_u) * decay @ self.weight_u)
+        a = self.a
+        decay = np.exp(-np.outer(t, self.alpha ** 2) * self.c / a ** 2)
+        p = 2 * self.p0 / self.q * decay @ (self.weight_p * (np.cos(self.alpha * x / a) - np.cos(self.alpha)))
+        u = self.b / self.shear * ((1 - self.nu) / 2 - (1 - self.nu_u) * decay @ self.weight_u)
         return p, u
 
     def ramped(self, x, t, ramp):
         """The same for the example's load, q (1 - cos(pi t / ramp)) / 2 up to t = ramp (Duhamel)."""
         taus = np.linspace(0.0, ramp, 801)
-        dq = Q * 0.5 * math.pi / ramp * np.sin(math.pi * taus / ramp)     # dq/dtau
+        dq = self.q * 0.5 * math.pi / ramp * np.sin(math.pi * taus / ramp)     # dq/dtau
         wts = np.full(taus.size, taus[1] - taus[0]); wts[[0, -1]] *= 0.5
         p = np.zeros(len(t)); u = np.zeros(len(t))
         for tau, w, rate in zip(taus, wts, dq):
@@ -86,14 +86,14 @@ class Mandel:
 def main():
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     path = args[0] if args else "mandel.txt"
-    header = {}
+    run = {}
     for line in open(path):
         if line.startswith("# k "):
             words = line[2:].split()
-            header = dict(zip(words[0::2], map(float, words[1::2])))
+            run = dict(zip(words[0::2], map(float, words[1::2])))
     data = np.loadtxt(path)
-    k, d, ramp = header.get("k", 1e-5), header.get("d", 0.005), header.get("ramp", 0.05)
-    model = Mandel(k)
+    k, d, ramp, A = run["k"], run["d"], run["ramp"], run["a"]
+    model = Mandel(run)
     t = data[:, 0]
     # the strips average the two particle columns either side of x = 0 and of x = a/2
     p_c = 0.5 * sum(model.ramped(x, t, ramp)[0] for x in (0.5 * d, 0.5 * d))
@@ -111,11 +111,22 @@ def main():
               f"        {data[i, 3] / model.p0:6.3f} ({p_h[i] / model.p0:6.3f})"
               f"       {1e3 * data[i, 1]:7.4f} ({1e3 * u[i]:7.4f})")
     after = T > 2 * model.c * ramp / A ** 2
+    if not after.any():
+        print("(the run ends before twice the ramp: no peak to compare)")
+    else:
+        report_peak(data, p_c, T, after, model)
+    if "--no-plot" in sys.argv:
+        return
+    plot(data, p_c, p_h, u, T, model, d)
+
+
+def report_peak(data, p_c, T, after, model):
     peak, peak_m = data[after, 2].max() / model.p0, p_c[after].max() / model.p0
     print(f"peak at the centre (the Mandel-Cryer rise): {peak:.3f} p0 at T = {T[after][data[after, 2].argmax()]:.3f}"
           f" (Mandel {peak_m:.3f} p0 at T = {T[after][p_c[after].argmax()]:.3f})")
-    if "--no-plot" in sys.argv:
-        return
+
+
+def plot(data, p_c, p_h, u, T, model, d):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
