@@ -137,7 +137,11 @@ std::vector<BadInput> cases()
   // ---- pair_style sph/soil
   error("PairUnknownKeyword", "patch", {}, "pair_style sph/soil gamma 1",
         "Illegal pair_style sph/soil keyword gamma (allowed: alpha, beta, viscosity_h0, wall, kernel, "
-        "artificial_stress, continuity, gradient_correction)");
+        "artificial_stress, continuity, gradient_correction, density_diffusion, stress_diffusion)");
+  error("PairStressDiffusion", "patch", {}, "pair_style sph/soil stress_diffusion 2",
+        "Illegal pair_style sph/soil stress_diffusion 2: must be in [0, 1]");
+  error("PairDensityDiffusion", "patch", {}, "pair_style sph/soil density_diffusion -0.1",
+        "Illegal pair_style sph/soil density_diffusion -0.1: must be in [0, 1]");
   error("PairContinuity", "patch", {}, "pair_style sph/soil continuity density",
         "Illegal pair_style sph/soil continuity density: must be volume or mass");
   error("PairGradientCorrection", "patch", {}, "pair_style sph/soil gradient_correction 1",

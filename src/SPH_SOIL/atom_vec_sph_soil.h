@@ -67,13 +67,20 @@ class AtomVecSPHSoil : public AtomVec {
   // a saturated soil's pore pressure p (positive in compression, while the stress above is
   // the effective stress, positive in tension: the total stress is stress - p I), and the
   // pair style's sum of the pore water's flow, div(k/gamma_w grad(p - rho_w g.x))
-  // (soil_pore_water.h); 0 for dry soil. A wall particle's p is the pressure of a drained wall
+  // (soil_pore_water.h): the volume of water the particle takes in per unit time and per unit
+  // of its own volume (a free water particle's: what it takes from the pores); 0 for dry soil.
+  // A wall particle's p is the pressure of a drained wall
   double *pore_pressure;
   double *pore_flow;
 
   // the axis along which sph_soil/set geostatic last put the overburden (0 x, 1 y, 2 z), -1
   // if never: pair_style sph/soil warns when gravity points along another
   int geostatic_vertical = -1;
+  // the group (its bit) and K0 of the last sph_soil/set geostatic whose state was not yet held
+  // against the materials' yield surfaces (0: none): pair_style sph/soil does it at its init
+  // where the materials were not known to the command
+  int geostatic_unchecked_group = 0;
+  double geostatic_k0 = 0.0;
 
   // The layout of this style's per-atom restart data has a number; a restart file of another
   // number stops read_restart with a message that names both (process_args()).

@@ -23,6 +23,7 @@
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
 #include "sph_soil_pore_water.h"
+#include "sph_soil_stress_diffusion.h"
 #include "thermo.h"
 #include "update.h"
 #include "utils.h"
@@ -140,7 +141,9 @@ void FixSPHSoil::init()
   density_floor_of_type.assign(atom->ntypes + 1, 0.0);
   storage_of_type.assign(atom->ntypes + 1, 0.0);
   water_modulus_of_type.assign(atom->ntypes + 1, 0.0);
+  exchanges_of_type.assign(atom->ntypes + 1, 0);
   pressures = pair->carries_pressures();
+  diffusion = pair->stress_diffusion_unit();
   variable_diffusivity = pair->pore_water_unit().variable_conductivity();
   max_diffusivity = 0.0;
   for (int type = 1; type <= atom->ntypes; type++) {
@@ -148,8 +151,12 @@ void FixSPHSoil::init()
     if (!model_of_type[type]) continue;
     const auto &material = pair->material(type);
     density_floor_of_type[type] = SPHSoil::DENSITY_FLOOR * material.density;
-    if (material.water) water_modulus_of_type[type] = material.model->p_wave_modulus();
+    if (material.water) {
+      water_modulus_of_type[type] = material.model->p_wave_modulus();
+      exchanges_of_type[type] = 1;
+    }
     if (material.saturated) {
+      exchanges_of_type[type] = 1;
       storage_of_type[type] = material.pore_water.storage_modulus();
       max_diffusivity = MAX(max_diffusivity, material.pore_water.diffusivity());
     }
@@ -425,6 +432,29 @@ SPH_SOIL_INLINE void FixSPHSoil::water_pressure(int i) const
         atom->rho[i], pair->material(type).density, water_modulus_of_type[type]);
 }
 
+// The water a saturated soil particle's pores take in from its partners (or give them), and the
+// water a free water particle takes from the pores (or gives them), brings its mass and
+// momentum over the step (the pair style's moved_water()): the particle's mass and density grow
+// alike, so that a soil particle's volume stays its skeleton's (the mixture's density follows
+// its porosity: rho_w more per unit of water taken in), and a free water particle is
+// compressed by what it takes in (its pressure does the work the pores receive) and then
+// expands with it (doc/theory.rst 7.4). Each pair gives one what it takes from the other, so
+// that with one time step for all mass and momentum are kept to round-off. (At the corrector,
+// with the rates of the state the pair style saw: the exchange is slow.)
+SPH_SOIL_INLINE void FixSPHSoil::exchange_water(int i, double step) const
+{
+  if (!exchanges_of_type[atom->type[i]]) return;
+  const double *moved = pair->pore_water_unit().moved_water(i);
+  const double mass = atom->rmass[i];
+  // (a particle never gives more than a fraction of itself in one step; the floor guards the
+  // sign against a wild rate, which the time step's diffusion bound rules out)
+  const double after = std::max(mass + step * moved[0], 0.5 * mass);
+  double *v = atom->v[i];
+  for (int a = 0; a < 3; a++) v[a] = (mass * v[a] + step * moved[1 + a]) / after;
+  atom->rho[i] *= after / mass;
+  atom->rmass[i] = after;
+}
+
 // dp/dt = K_w / n (-div v + div(k / gamma_w grad(p - rho_w g.x))) (soil_pore_water.h), from
 // the rates of the last force evaluation
 SPH_SOIL_INLINE double FixSPHSoil::pore_pressure_rate(int i) const
@@ -438,6 +468,8 @@ SPH_SOIL_INLINE double FixSPHSoil::pore_pressure_rate(int i) const
 // the full step with rate(t)
 template <bool PRESSURES> SPH_SOIL_INLINE bool FixSPHSoil::correct(int i, double half_step)
 {
+  // (first: the exchange's volumes are those of the state the pair style saw)
+  if (PRESSURES) exchange_water(i, 2.0 * half_step);
   double *rho = atom->rho;
   const double *old = integrator_state[i];
   rho[i] = std::max(rho[i] * SPHSoil::density_growth(half_step * (atom->drho[i] / rho[i] - old[HEUN_LOG_DRHO])),
@@ -455,6 +487,12 @@ template <bool PRESSURES> SPH_SOIL_INLINE bool FixSPHSoil::correct(int i, double
   for (int k = 0; k < 6; k++) {
     stress[k] += half_step * (new_rate[k] - stress_rate[k]);
     stress_rate[k] = new_rate[k];
+  }
+  // the stress diffusion (doc/theory.rst 2.8): over the whole step at the rate of the state the
+  // predictor reached (a stabiliser, first order is enough), before the return
+  if (diffusion) {
+    const double *diffused = diffusion->rate(i);
+    for (int k = 0; k < 6; k++) stress[k] += 2.0 * half_step * diffused[k];
   }
   return model->return_to_admissible(stress);
 }

@@ -91,6 +91,8 @@ class FixSPHSoil : public Fix {
   SPHSoil::StepSchedule schedule;    // the time step per level (stepping level), or off
   class AtomVecSPHSoil *avec;
   class PairSPHSoil *pair;
+  // the pair style's stress diffusion, whose rates the corrector adds, or nullptr
+  const class SPHSoilStressDiffusion *diffusion = nullptr;
   std::vector<const SPHSoil::ConstitutiveModel *> model_of_type;    // owned by the pair style
   std::vector<double> density_floor_of_type;    // SPHSoil::DENSITY_FLOOR of the material's rho0
   // K_w / n of a saturated soil type (soil_pore_water.h), 0 for a dry one: dp/dt = K_w / n
@@ -99,6 +101,10 @@ class FixSPHSoil : public Fix {
   double pore_pressure_rate(int i) const;
   // K_w of a free water type (soil_water.h), 0 otherwise: its pressure follows its density
   std::vector<double> water_modulus_of_type;
+  // whether a type exchanges water with its partners (a saturated soil's pores, free water):
+  // the water brings its mass and momentum (exchange_water())
+  std::vector<int> exchanges_of_type;
+  void exchange_water(int i, double step) const;
   void water_pressure(int i) const;
   bigint yielded_count;
 

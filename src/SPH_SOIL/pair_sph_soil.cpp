@@ -22,6 +22,7 @@
 #include "sph_soil_input.h"
 #include "sph_soil_offenders.h"
 #include "sph_soil_pore_water.h"
+#include "sph_soil_stress_diffusion.h"
 #include "sph_soil_walls.h"
 #include "utils.h"
 
@@ -54,8 +55,10 @@ PairSPHSoil::PairSPHSoil(LAMMPS *lmp) :
   // ghost atoms is the virial (LAMMPS asks for it with newton on); pair by pair otherwise
   no_virial_fdotr_compute = 0;
   // (the pore water sends one number per atom, the gradient correction up to its COMM_SIZE)
-  comm_forward = MAX(walls->forward_size(), SPHSoilGradientCorrection::COMM_SIZE);
-  comm_reverse = MAX(walls->reverse_size(), SPHSoilGradientCorrection::COMM_SIZE);
+  comm_forward = MAX(MAX(walls->forward_size(), SPHSoilGradientCorrection::COMM_SIZE),
+                     SPHSoilStressDiffusion::COMM_SIZE);
+  comm_reverse = MAX(MAX(walls->reverse_size(), SPHSoilGradientCorrection::COMM_SIZE),
+                     MAX(SPHSoilStressDiffusion::COMM_SIZE, SPHSoilPoreWater::FLOW_COMM_SIZE));
   skin_fix_id = "SPH_SOIL_SKIN_" + std::to_string(instance_me);
 }
 
@@ -99,6 +102,8 @@ void PairSPHSoil::set_defaults()
   free_slip = false;
   continuity_volume = true;
   gradient_correction = CORRECTION_NONE;
+  density_diffusion = DEFAULT_DIFFUSION;
+  stress_diffusion = AUTO_DIFFUSION;
   kernel = SPHSoil::KernelKind();
 }
 
@@ -106,6 +111,7 @@ void PairSPHSoil::set_defaults()
    pair_style sph/soil [alpha A] [beta B] [viscosity_h0 H] [wall noslip|freeslip]
                        [kernel cubic|wendland2] [artificial_stress epsilon]
                        [continuity volume|mass] [gradient_correction no|yes|full]
+                       [density_diffusion delta] [stress_diffusion delta]
 ------------------------------------------------------------------------- */
 
 void PairSPHSoil::settings(int narg, char **arg)
@@ -156,6 +162,10 @@ void PairSPHSoil::settings(int narg, char **arg)
                                     v, names[0], names[1], names[2]);
          gradient_correction = (int) (found - names);
        }},
+      {"density_diffusion",
+       [&](const char *v) { density_diffusion = number_of("density_diffusion", v, between(0.0, 1.0, false, false)); }},
+      {"stress_diffusion",
+       [&](const char *v) { stress_diffusion = number_of("stress_diffusion", v, between(0.0, 1.0, false, false)); }},
   };
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
@@ -240,9 +250,12 @@ void PairSPHSoil::init_style()
   }
 
   walls->init();
-  pore_water->init(materials.all(), materials.set_flags());
+  pore_water->init(materials.all(), materials.set_flags(), density_diffusion);
   // free water: the momentum sum's multiphase form (see the header)
   multiphase = pore_water->free_water();
+  type_free_water.assign(atom->ntypes + 1, 0);
+  for (int t = 1; t <= atom->ntypes; t++) type_free_water[t] = materials.has(t) && materials.all()[t].water;
+  init_stress_diffusion();
   const bool full = gradient_correction == CORRECTION_FULL;
   if (gradient_correction == CORRECTION_NONE || (correction && correction->full() != full))
     correction.reset();
@@ -343,6 +356,31 @@ void *PairSPHSoil::extract(const char *name, int &dim)
   return nullptr;
 }
 
+/* ----------------------------------------------------------------------
+   the stress diffusion: its coefficient delta c per soil type (c its wave speed, undrained for
+   a saturated soil); by default on in runs with pore water or free water (a submerged soil's
+   effective stress near its surface is a few pascals, which the zigzag swamps), off in dry
+   runs (whose validated answers it would move, and whose step it would slow)
+------------------------------------------------------------------------- */
+
+void PairSPHSoil::init_stress_diffusion()
+{
+  const double delta = stress_diffusion == AUTO_DIFFUSION
+      ? (pore_water->pressures() ? DEFAULT_DIFFUSION : 0.0)
+      : stress_diffusion;
+  std::vector<double> coefficient(atom->ntypes + 1, 0.0);
+  for (int t = 1; t <= atom->ntypes; t++) {
+    const SPHSoil::SoilMaterial &m = materials.all()[t];
+    if (materials.has(t) && !m.is_wall() && !m.water) coefficient[t] = delta * m.wave_speed();
+  }
+  if (delta <= 0.0) {
+    diffusion.reset();
+    return;
+  }
+  if (!diffusion) diffusion.reset(new SPHSoilStressDiffusion(lmp, this));
+  diffusion->init(coefficient);
+}
+
 double PairSPHSoil::drained_inflow(int i) const
 {
   return pore_water->drained_inflow(i);
@@ -361,6 +399,7 @@ int PairSPHSoil::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag
 {
   if (pore_water->communicating()) return pore_water->pack_forward_comm(n, list, buf);
   if (correction && correction->communicating()) return correction->pack_forward_comm(n, list, buf);
+  if (diffusion && diffusion->communicating()) return diffusion->pack_forward_comm(n, list, buf);
   return walls->pack_forward_comm(n, list, buf);
 }
 
@@ -368,6 +407,7 @@ void PairSPHSoil::unpack_forward_comm(int n, int first, double *buf)
 {
   if (pore_water->communicating()) return pore_water->unpack_forward_comm(n, first, buf);
   if (correction && correction->communicating()) return correction->unpack_forward_comm(n, first, buf);
+  if (diffusion && diffusion->communicating()) return diffusion->unpack_forward_comm(n, first, buf);
   walls->unpack_forward_comm(n, first, buf);
 }
 
@@ -375,6 +415,7 @@ int PairSPHSoil::pack_reverse_comm(int n, int first, double *buf)
 {
   if (pore_water->communicating()) return pore_water->pack_reverse_comm(n, first, buf);
   if (correction && correction->communicating()) return correction->pack_reverse_comm(n, first, buf);
+  if (diffusion && diffusion->communicating()) return diffusion->pack_reverse_comm(n, first, buf);
   return walls->pack_reverse_comm(n, first, buf);
 }
 
@@ -382,6 +423,7 @@ void PairSPHSoil::unpack_reverse_comm(int n, int *list, double *buf)
 {
   if (pore_water->communicating()) return pore_water->unpack_reverse_comm(n, list, buf);
   if (correction && correction->communicating()) return correction->unpack_reverse_comm(n, list, buf);
+  if (diffusion && diffusion->communicating()) return diffusion->unpack_reverse_comm(n, list, buf);
   walls->unpack_reverse_comm(n, list, buf);
 }
 
@@ -395,19 +437,20 @@ void PairSPHSoil::write_restart_settings(FILE *fp)
   const int format = RESTART_FORMAT;
   const int flags[4] = {free_slip ? 1 : 0, kernel.index, continuity_volume ? 1 : 0,
                         gradient_correction};
-  const double numbers[4] = {viscosity_alpha, viscosity_beta, viscosity_h0,
-                             artificial_stress_epsilon};
+  const double numbers[6] = {viscosity_alpha, viscosity_beta, viscosity_h0,
+                             artificial_stress_epsilon, density_diffusion, stress_diffusion};
   fwrite(&format, sizeof(int), 1, fp);
   fwrite(flags, sizeof(int), 4, fp);
-  fwrite(numbers, sizeof(double), 4, fp);
+  fwrite(numbers, sizeof(double), 6, fp);
 }
 
 void PairSPHSoil::read_restart_settings(FILE *fp)
 {
   // format 1 (before the continuity keyword) was written by runs of the mass form: they go on
-  // with it; format 2 (before gradient_correction) by runs without the correction
+  // with it; format 2 (before gradient_correction) by runs without the correction; format 3
+  // (before the diffusions) by runs without them
   int format = 0, flags[4] = {0, 0, 0, 0};
-  double numbers[4] = {0.0, 0.0, 0.0, 0.0};
+  double numbers[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   if (comm->me == 0) utils::sfread(FLERR, &format, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&format, 1, MPI_INT, 0, world);
   if (format < 1 || format > RESTART_FORMAT)
@@ -416,13 +459,14 @@ void PairSPHSoil::read_restart_settings(FILE *fp)
         "Restart file holds pair_style sph/soil data of format {}; this build of "
         "SPH_SOIL reads formats 1 to {}",
         format, RESTART_FORMAT);
-  const int nflags = format + 1;
+  const int nflags = std::min(format + 1, 4);
+  const int nnumbers = format >= 4 ? 6 : 4;
   if (comm->me == 0) {
     utils::sfread(FLERR, flags, sizeof(int), nflags, fp, nullptr, error);
-    utils::sfread(FLERR, numbers, sizeof(double), 4, fp, nullptr, error);
+    utils::sfread(FLERR, numbers, sizeof(double), nnumbers, fp, nullptr, error);
   }
   MPI_Bcast(flags, 4, MPI_INT, 0, world);
-  MPI_Bcast(numbers, 4, MPI_DOUBLE, 0, world);
+  MPI_Bcast(numbers, 6, MPI_DOUBLE, 0, world);
   free_slip = flags[0] != 0;
   kernel.index = flags[1];
   continuity_volume = flags[2] != 0;
@@ -431,6 +475,8 @@ void PairSPHSoil::read_restart_settings(FILE *fp)
   viscosity_beta = numbers[1];
   viscosity_h0 = numbers[2];
   artificial_stress_epsilon = numbers[3];
+  density_diffusion = numbers[4];
+  stress_diffusion = numbers[5];
 }
 
 void PairSPHSoil::write_restart(FILE *fp)

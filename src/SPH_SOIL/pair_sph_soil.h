@@ -54,7 +54,7 @@ class PairSPHSoil : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   // the layout of the style's restart data has a number: read_restart of another stops
-  static constexpr int RESTART_FORMAT = 3;
+  static constexpr int RESTART_FORMAT = 4;
 
   // for fix sph/soil, the refinement and the computes
   const SPHSoil::SoilMaterial &material(int type) const { return materials.of(type); }
@@ -80,6 +80,8 @@ class PairSPHSoil : public Pair {
   bool carries_pressures() const;
   // the pore water of saturated soil (known after init)
   const class SPHSoilPoreWater &pore_water_unit() const { return *pore_water; }
+  // the stress diffusion (its rates of the last evaluation), or nullptr without one
+  const class SPHSoilStressDiffusion *stress_diffusion_unit() const { return diffusion.get(); }
   // whether the pair loop adds the artificial stress (known after init)
   bool artificial_stress_active() const { return has_artificial_stress; }
 
@@ -106,6 +108,15 @@ class PairSPHSoil : public Pair {
   // first-moment tensor too): the restart file's flag
   enum { CORRECTION_NONE = 0, CORRECTION_SCALAR = 1, CORRECTION_FULL = 2 };
   int gradient_correction;
+  // delta-SPH's diffusions (doc/theory.rst 2.8, 7.4): of free water's density, and of the
+  // soils' stress (stress_diffusion: AUTO_DIFFUSION until init resolves it, from whether the
+  // run has pore water or free water); 0: none
+  double density_diffusion, stress_diffusion;
+  static constexpr double AUTO_DIFFUSION = -1.0;
+  // delta of both by default: Marrone et al. (2011)'s and DualSPHysics's choice for water
+  static constexpr double DEFAULT_DIFFUSION = 0.1;
+  void init_stress_diffusion();
+  std::unique_ptr<class SPHSoilStressDiffusion> diffusion;
   double **sound_speed_ij;    // mean P-wave speed of a type pair
   double max_h;               // largest smoothing length at init
   class AtomVecSPHSoil *avec;
@@ -127,6 +138,14 @@ class PairSPHSoil : public Pair {
   void warn_coinciding();
   void warn_soil_in_rigid_bodies();
   void warn_geostatic_across_gravity();
+
+ public:
+  // sph_soil/set geostatic's check: a warning with the count of the group's soil particles
+  // that its stress (from K0) puts on or outside their material's yield surface, if any.
+  // False (and nothing done) where a type of the group has no material yet. Collective.
+  bool warn_geostatic_yield(int groupbit, double k0);
+
+ protected:
   void check_list_fits();
 
   // the loop (pair_sph_soil_loop.cpp). Per owned and ghost atom: the packed rows of its inputs
@@ -146,6 +165,13 @@ class PairSPHSoil : public Pair {
   // form makes the interface unstable; doc/theory.rst 7.5). The packed rows then hold the stress
   // itself, not stress / rho^2
   bool multiphase;
+  // In that form a pair of a soil particle and a free water particle sums their pressures
+  // only: the water bears on the grains through its pressure, and the skeleton's effective
+  // stress ends at the soil's surface (sigma' n = 0 under water), as a free surface's stress
+  // does (doc/theory.rst 7.5). Per owned and ghost atom, the pressure of its packed stress (its
+  // pore or water pressure, scaled as the packed stress is), and per type whether it is water
+  std::vector<double> packed_pressure;
+  std::vector<int> type_free_water;
   // (PRESSURES: some type carries a pressure, which the total stress subtracts)
   template <int DIMENSION, bool PHASES, bool PRESSURES> void pack_atoms();
   // with a time step per level (fix sph/soil's schedule, soil_level_steps.h): per owned and

@@ -18,6 +18,7 @@
 #include "soil_wall_images.h"
 #include "sph_soil_gradient_correction.h"
 #include "sph_soil_pore_water.h"
+#include "sph_soil_stress_diffusion.h"
 #include "sph_soil_wall_friction.h"
 #include "sph_soil_walls.h"
 #include "update.h"
@@ -164,6 +165,7 @@ template <int DIMENSION, bool PHASES, bool PRESSURES> void PairSPHSoil::pack_ato
     row[P_RHO] = rho[i];
     row[P_H] = h[i];
   }
+  if (PHASES) packed_pressure.assign(pore_pressure, pore_pressure + nall);
   if (nall > 0) memset(sums, 0, sizeof(double) * SUM_ROW<DIMENSION>() * nall);
 }
 
@@ -366,8 +368,13 @@ void PairSPHSoil::eval()
     pack_atoms<D, false, false>();
   walls->prepare(packed, neighbours, kernel, D, PHASES);
   // the stress of each atom over its kernel's first moment (after the walls have written theirs)
-  if (correction)
+  if (correction) {
     correction->correct(packed, neighbours, wall_kind, walls->slips(), avec->wall_normal, kernel, D);
+    if (PHASES)
+      for (int i = 0; i < atom->nlocal + atom->nghost; i++) packed_pressure[i] *= correction->factor(i);
+  }
+  const double *const pressure = PHASES ? packed_pressure.data() : nullptr;
+  const int *const free_water = type_free_water.data();
   if (ARTIFICIAL_STRESS) pack_artificial_stress<D, Kernel, PHASES>();
   const int *const artificial_type = type_artificial_stress.data();
   const double *const in = packed;
@@ -445,6 +452,12 @@ void PairSPHSoil::eval()
           stress_sum[k] = si[k] + sj[k];
         }
       }
+      // soil and free water: their pressures only (see the header)
+      if (PHASES && free_water[itype] != free_water[jtype]) {
+        const double both = -(pressure[i] + pressure[j]);
+        for (int a = 0; a < D; a++)
+          for (int b = a; b < D; b++) stress_sum[voigt_index(a, b)] = a == b ? both : 0.0;
+      }
       if (ARTIFICIAL_STRESS && (artificial_type[itype] || artificial_type[jtype])) {
         // (R_i + R_j) (W(r) / W(spacing))^4
         const double *ai = artificial + (size_t) i * ARTIFICIAL;
@@ -520,7 +533,9 @@ void PairSPHSoil::eval()
     unpack_sums<D, CORRECTION_FULL>();
   else
     unpack_sums<D, CORRECTION_SCALAR>();
-  // the pore water's flow: a loop of its own, so that runs of dry soil pay nothing for it
+  // the pore water's flow and free water's density diffusion: a loop of their own, so that runs
+  // of dry soil pay nothing for them; the stress diffusion likewise
   if (pore_water->flows()) pore_water->flow(packed, neighbours, kernel, D);
+  if (diffusion) diffusion->diffuse(packed, neighbours, kernel, D);
 }
 

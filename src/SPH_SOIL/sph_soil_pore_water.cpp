@@ -33,14 +33,16 @@ SPHSoilPoreWater::SPHSoilPoreWater(LAMMPS *lmp, Pair *owner) :
 /* ---------------------------------------------------------------------- */
 
 void SPHSoilPoreWater::init(const std::vector<SoilMaterial> &materials,
-                            const std::vector<int> &has_material)
+                            const std::vector<int> &has_material, double density_diffusion)
 {
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
   const int ntypes = (int) materials.size() - 1;
   mobility_of_type.assign(ntypes + 1, 0.0);
   water_of_type.assign(ntypes + 1, PoreWater());
   density_of_type.assign(ntypes + 1, 0.0);
+  free_water_of_type.assign(ntypes + 1, FreeWaterType());
   saturated = water = variable = false;
+  diffuses_water = false;
   int first_saturated = 0;
   for (int t = 1; t <= ntypes; t++) {
     if (!has_material[t]) continue;
@@ -48,7 +50,16 @@ void SPHSoilPoreWater::init(const std::vector<SoilMaterial> &materials,
     // a drained wall and free water: the pressure of the water the soil drains into
     if (m.is_wall() || m.water) {
       if (m.drained || m.water) mobility_of_type[t] = DRAINED;
-      water = water || m.water;
+      if (m.water) {
+        // (its P-wave modulus is K_w, soil_water.h)
+        const double modulus = m.model->p_wave_modulus();
+        FreeWaterType &w = free_water_of_type[t];
+        w.density = m.density;
+        w.compliance = m.density / modulus;
+        w.diffusion_speed = density_diffusion * std::sqrt(modulus / m.density);
+        water = true;
+        diffuses_water = diffuses_water || w.diffusion_speed > 0.0;
+      }
       continue;
     }
     if (!m.saturated) continue;
@@ -156,8 +167,10 @@ void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list
   const int *type = atom->type;
   const double *pressure = avec->pore_pressure;
   double *flow = avec->pore_flow;
+  double *drho = atom->drho;
   memset(flow, 0, sizeof(double) * (newton_pair ? nall : nlocal));
   inflow.assign(nlocal, 0.0);
+  moved.assign((size_t) (newton_pair ? nall : nlocal) * MOVED, 0.0);
   // each atom's mobility: its type's, or (PER_ATOM) at its density where k follows the porosity
   if (PER_ATOM) {
     atom_mobility.resize(nall);
@@ -166,6 +179,7 @@ void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list
   }
   const double *mobility = PER_ATOM ? atom_mobility.data() : mobility_of_type.data();
   const PoreWater *pore = water_of_type.data();
+  const FreeWaterType *free_water = free_water_of_type.data();
   double gravity[3];
   SPHSoilFixes::gravity_sum(gravity_fixes, gravity);
   const int *partners = list.partner_data();
@@ -174,32 +188,68 @@ void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list
     const double lambda_i = mobility[PER_ATOM ? i : type[i]];
     if (lambda_i == 0.0) continue;
     const double *pi = packed + (size_t) i * PACKED;
+    const FreeWaterType &water_i = free_water[type[i]];
     for (int jj = list.first(i); jj < list.end(i); jj++) {
       const int j = partners[jj];
       const double lambda_j = mobility[PER_ATOM ? j : type[j]];
+      if (lambda_j == 0.0 || (lambda_i == DRAINED && lambda_j == DRAINED && !diffuses_water)) continue;
+      const double *pj = packed + (size_t) j * PACKED;
+      const FreeWaterType &water_j = free_water[type[j]];
+      const bool update_j = newton_pair || j < nlocal;
+      PairGeometry g;
+      if (!pair_geometry<DIMENSION, Kernel>(pi + P_X, pi[P_H], pj, g)) continue;
+
+      if (lambda_i == DRAINED && lambda_j == DRAINED) {
+        // two free water particles (drained walls hold no free water): delta-SPH's density
+        // diffusion, in the head's form (soil_water.h)
+        if (!water_i.is_water() || !water_j.is_water()) continue;
+        const double speed = 0.5 * (water_i.diffusion_speed + water_j.diffusion_speed);
+        const double rho_w = 0.5 * (water_i.density + water_j.density);
+        const double term = pore_flow<DIMENSION>(pressure[i], pressure[j], rho_w, gravity, g.dx,
+                                                 g.r2, g.hij, g.factor, speed * g.hij);
+        drho[i] += water_i.compliance * pj[P_VOLUME] * term;
+        if (update_j) drho[j] -= water_j.compliance * pi[P_VOLUME] * term;
+        continue;
+      }
+
+      // the pore water's flow: between two saturated soil particles the harmonic mean of their
+      // mobilities, to a drained partner (a drained wall, free water) the soil's conductance alone
       double lambda_ij, rho_w;
       if (lambda_i > 0.0 && lambda_j > 0.0) {
         lambda_ij = harmonic_mobility(lambda_i, lambda_j);
         rho_w = 0.5 * (pore[type[i]].water_density + pore[type[j]].water_density);
-      } else if (lambda_i > 0.0 && lambda_j == DRAINED) {
+      } else if (lambda_i > 0.0) {
         lambda_ij = 2.0 * lambda_i;
         rho_w = pore[type[i]].water_density;
-      } else if (lambda_i == DRAINED && lambda_j > 0.0) {
+      } else {
         lambda_ij = 2.0 * lambda_j;
         rho_w = pore[type[j]].water_density;
-      } else {
-        continue;
       }
-      const double *pj = packed + (size_t) j * PACKED;
-      PairGeometry g;
-      if (!pair_geometry<DIMENSION, Kernel>(pi + P_X, pi[P_H], pj, g)) continue;
       const double term = pore_flow<DIMENSION>(pressure[i], pressure[j], rho_w, gravity, g.dx, g.r2,
                                                g.hij, g.factor, lambda_ij);
       if (lambda_i > 0.0) flow[i] += pj[P_VOLUME] * term;
-      if (lambda_j > 0.0 && (newton_pair || j < nlocal)) flow[j] -= pi[P_VOLUME] * term;
-      // (the water taken from a drained partner: each side's owner counts its own)
-      if (lambda_j == DRAINED) inflow[i] += pi[P_VOLUME] * pj[P_VOLUME] * term;
-      else if (lambda_i == DRAINED && j < nlocal) inflow[j] -= pi[P_VOLUME] * pj[P_VOLUME] * term;
+      if (lambda_j > 0.0 && update_j) flow[j] -= pi[P_VOLUME] * term;
+      // the water taken from a drained partner: each side's owner counts its own
+      const double volume = pi[P_VOLUME] * pj[P_VOLUME] * term;    // into i, per unit time
+      if (lambda_j == DRAINED) inflow[i] += volume;
+      else if (lambda_i == DRAINED && j < nlocal) inflow[j] -= volume;
+      // the water brings its mass and the momentum it has with the particle that gives it
+      // (a soil particle or free water; a drained wall is a reservoir, whose own are not
+      // counted): fix sph/soil moves them (doc/theory.rst 7.4)
+      const double mass = rho_w * volume;
+      const double *giver = (volume > 0.0 ? pj : pi) + P_V;
+      const bool exchanges_i = lambda_i > 0.0 || water_i.is_water();
+      const bool exchanges_j = (lambda_j > 0.0 || water_j.is_water()) && update_j;
+      if (exchanges_i) {
+        double *to = &moved[(size_t) i * MOVED];
+        to[0] += mass;
+        for (int a = 0; a < DIMENSION; a++) to[1 + a] += mass * giver[a];
+      }
+      if (exchanges_j) {
+        double *to = &moved[(size_t) j * MOVED];
+        to[0] -= mass;
+        for (int a = 0; a < DIMENSION; a++) to[1 + a] -= mass * giver[a];
+      }
     }
   }
 }
@@ -234,11 +284,19 @@ void SPHSoilPoreWater::unpack_forward_comm(int n, int first, double *buf)
 
 int SPHSoilPoreWater::pack_reverse_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; k++) buf[k] = avec->pore_flow[first + k];
-  return n;
+  int m = 0;
+  for (int k = first; k < first + n; k++) {
+    buf[m++] = avec->pore_flow[k];
+    for (int c = 0; c < MOVED; c++) buf[m++] = moved[(size_t) k * MOVED + c];
+  }
+  return m;
 }
 
 void SPHSoilPoreWater::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  for (int k = 0; k < n; k++) avec->pore_flow[list[k]] += buf[k];
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    avec->pore_flow[list[k]] += buf[m++];
+    for (int c = 0; c < MOVED; c++) moved[(size_t) list[k] * MOVED + c] += buf[m++];
+  }
 }

@@ -34,12 +34,14 @@ class SPHSoilPoreWater : protected Pointers {
 
   // at the pair style's init, from the materials of the types (materials[t] set where
   // `has_material[t]`): errors and warnings for what a saturated soil cannot be
+  // `density_diffusion`: delta of the free water's density diffusion (0: none)
   void init(const std::vector<SPHSoil::SoilMaterial> &materials,
-            const std::vector<int> &has_material);
+            const std::vector<int> &has_material, double density_diffusion);
   // whether some type carries a pressure (saturated soil, free water): the ghosts need it
   bool pressures() const { return saturated || water; }
-  // whether some type is a saturated soil: the pore water flows
-  bool flows() const { return saturated; }
+  // whether the flow pass has something to do: a saturated soil's pore water flows, free
+  // water's density diffuses
+  bool flows() const { return saturated || diffuses_water; }
   // whether some type is free water
   bool free_water() const { return water; }
   // whether some saturated soil's k follows its porosity (the time step then follows the
@@ -67,6 +69,14 @@ class SPHSoilPoreWater : protected Pointers {
     return saturated && i < (int) inflow.size() ? inflow[i] : 0.0;
   }
 
+  // the mass (kg/s) and momentum (3, kg m/s^2) that owned atom i takes in with the water it
+  // exchanges with its partners at the last evaluation (a saturated soil's pores, free water;
+  // doc/theory.rst 7.4): each pair gives one what it takes from the other, the momentum being
+  // the water's mass times the velocity of the particle that gives it; fix sph/soil moves them
+  const double *moved_water(int i) const { return &moved[(size_t) i * MOVED]; }
+  // the numbers of moved_water(), and of an atom in the flow's reverse exchange
+  static constexpr int MOVED = 4, FLOW_COMM_SIZE = 1 + MOVED;
+
   // the pair style's communication, while this unit uses it
   bool communicating() const { return exchange != NONE; }
   int pack_forward_comm(int n, int *list, double *buf);
@@ -81,6 +91,15 @@ class SPHSoilPoreWater : protected Pointers {
   class Pair *owner;
   class AtomVecSPHSoil *avec;
   bool saturated, water, variable;
+  bool diffuses_water;    // some free water type with a density diffusion
+  // a free water type's numbers (others: 0)
+  struct FreeWaterType {
+    double density = 0.0;            // rho_w of its equation of state
+    double compliance = 0.0;         // rho_w / K_w: its density's change per pascal
+    double diffusion_speed = 0.0;    // delta c_w: its density diffusion's coefficient per h
+    bool is_water() const { return density > 0.0; }
+  };
+  std::vector<FreeWaterType> free_water_of_type;
   enum Exchange { NONE, PRESSURE, FLOW } exchange;
   std::vector<double> mobility_of_type;         // k / gamma_w; DRAINED; 0: no pore water
   std::vector<SPHSoil::PoreWater> water_of_type;  // a saturated soil's pore water (its rho_w, law)
@@ -95,6 +114,7 @@ class SPHSoilPoreWater : protected Pointers {
   }
   std::vector<class Fix *> gravity_fixes;       // their 'gvec': the water's weight
   std::vector<double> inflow;                   // drained_inflow() of the owned atoms
+  std::vector<double> moved;                    // moved_water() of owned and ghost atoms
 };
 
 }    // namespace LAMMPS_NS

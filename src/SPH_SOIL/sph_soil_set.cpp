@@ -8,6 +8,8 @@
 #include "atom_vec_sph_soil.h"
 #include "comm.h"
 #include "domain.h"
+#include "force.h"
+#include "pair_sph_soil.h"
 #include "group.h"
 #include "input.h"
 #include "soil_refine_split.h"
@@ -223,6 +225,8 @@ int SPHSoilSet::set_geostatic(const std::string &, char **args, int available)
     }
   }
   avec->geostatic_vertical = vertical;
+  // the state against the materials' yield surfaces: now if pair_style sph/soil knows them,
+  // else at its init
   double **x = atom->x;
   // free water above the surface weighs on the soil
   const double water_above = water ? water_density * gravity * MAX(water_level - surface, 0.0) : 0.0;
@@ -239,6 +243,10 @@ int SPHSoilSet::set_geostatic(const std::string &, char **args, int available)
     for (int k = 3; k < 6; k++) stress[k] = 0.0;
     if (water) avec->pore_pressure[i] = pore;
   }
+  auto *pair = dynamic_cast<PairSPHSoil *>(force->pair_match("sph/soil", 1));
+  const bool checked = pair && pair->allocated && pair->warn_geostatic_yield(groupbit, k0);
+  avec->geostatic_unchecked_group = checked ? 0 : groupbit;
+  avec->geostatic_k0 = k0;
   return extra;
 }
 

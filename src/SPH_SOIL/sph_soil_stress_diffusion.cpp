@@ -1,0 +1,197 @@
+/* ----------------------------------------------------------------------
+   SPH_SOIL package for LAMMPS: the stress diffusion of pair_style sph/soil (see the header)
+------------------------------------------------------------------------- */
+
+#include "sph_soil_stress_diffusion.h"
+
+#include "atom.h"
+#include "atom_vec_sph_soil.h"
+#include "comm.h"
+#include "force.h"
+#include "pair.h"
+#include "soil_packed_rows.h"
+#include "soil_stress_diffusion.h"
+#include "sph_soil_compat.h"
+
+#include <algorithm>
+
+using namespace LAMMPS_NS;
+using namespace SPHSoil;
+
+constexpr int SPHSoilStressDiffusion::COMM_SIZE;
+constexpr double SPHSoilStressDiffusion::SMALLEST_DETERMINANT;
+
+SPHSoilStressDiffusion::SPHSoilStressDiffusion(LAMMPS *lmp, Pair *owner) :
+    Pointers(lmp), owner(owner), avec(nullptr), exchange(NONE), per_atom(0), moment(0), components(0)
+{
+  static_assert(gradient_size<3>() <= COMM_SIZE, "the exchanges' size");
+}
+
+void SPHSoilStressDiffusion::init(const std::vector<double> &coefficient_of_type)
+{
+  avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  coefficient = coefficient_of_type;
+}
+
+/* ---------------------------------------------------------------------- */
+
+namespace {
+struct Diffuse {
+  SPHSoilStressDiffusion *diffusion;
+  const double *packed;
+  const NeighbourList &list;
+  int dimension;
+  template <class Kernel> void operator()() const
+  {
+    if (dimension == 2) diffusion->diffuse_sums<2, Kernel>(packed, list);
+    else diffusion->diffuse_sums<3, Kernel>(packed, list);
+  }
+};
+}    // namespace
+
+void SPHSoilStressDiffusion::diffuse(const double *packed, const NeighbourList &list,
+                                     KernelKind kernel, int dimension)
+{
+  per_atom = dimension == 2 ? gradient_size<2>() : gradient_size<3>();
+  moment = dimension == 2 ? moment_size<2>() : moment_size<3>();
+  components = dimension == 2 ? diffused_components<2>() : diffused_components<3>();
+  with_kernel(kernel, Diffuse{this, packed, list, dimension});
+}
+
+/* ----------------------------------------------------------------------
+   the two passes (see the header); each pair once from the half list, its shares to both
+------------------------------------------------------------------------- */
+
+template <int DIMENSION, class Kernel>
+void SPHSoilStressDiffusion::diffuse_sums(const double *packed, const NeighbourList &list)
+{
+  constexpr int D = DIMENSION, N = gradient_size<D>(), M = moment_size<D>();
+  constexpr int C = diffused_components<D>();
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int newton_pair = force->newton_pair;
+  const int *type = atom->type;
+  double **stress = avec->stress;
+  const int *partners = list.partner_data();
+  const double *coefficient_of_type = coefficient.data();
+  // the pairs that diffuse: two soil particles of one diffused type
+  auto diffused = [&](int i, int j) { return type[i] == type[j] && coefficient_of_type[type[i]] > 0.0; };
+
+  // 1. M and g of every atom
+  gradients.assign((size_t) nall * N, 0.0);
+  for (int i = 0; i < nlocal; i++) {
+    if (coefficient_of_type[type[i]] <= 0.0) continue;
+    const double *pi = packed + (size_t) i * PACKED;
+    double *gi = &gradients[(size_t) i * N];
+    for (int jj = list.first(i); jj < list.end(i); jj++) {
+      const int j = partners[jj];
+      if (!diffused(i, j)) continue;
+      const double *pj = packed + (size_t) j * PACKED;
+      PairGeometry g;
+      if (!pair_geometry<D, Kernel>(pi + P_X, pi[P_H], pj, g)) continue;
+      double difference[C], pair_sums[N];
+      for (int k = 0; k < C; k++) difference[k] = stress[j][k] - stress[i][k];
+      for (int k = 0; k < N; k++) pair_sums[k] = 0.0;
+      gradient_pair_sums<D>(g.dx, g.factor, difference, pair_sums);
+      const double vj = pj[P_VOLUME], vi = pi[P_VOLUME];
+      for (int k = 0; k < N; k++) gi[k] += vj * pair_sums[k];
+      if (newton_pair || j < nlocal) {
+        double *gj = &gradients[(size_t) j * N];
+        for (int k = 0; k < N; k++) gj[k] += vi * pair_sums[k];
+      }
+    }
+  }
+  if (newton_pair) {
+    exchange = SUMS;
+    SPHSoilCompat::reverse_comm_pair(comm, owner);
+    exchange = NONE;
+  }
+  valid.assign(nall, 0.0);
+  for (int i = 0; i < nlocal; i++)
+    if (coefficient_of_type[type[i]] > 0.0)
+      valid[i] = renormalised_gradient<D>(&gradients[(size_t) i * N], SMALLEST_DETERMINANT) ? 1.0 : 0.0;
+  exchange = GRADIENTS;
+  SPHSoilCompat::forward_comm_pair(comm, owner);
+  exchange = NONE;
+
+  // 2. the rates
+  rates.assign((size_t) (newton_pair ? nall : nlocal) * VOIGT, 0.0);
+  for (int i = 0; i < nlocal; i++) {
+    if (valid[i] == 0.0) continue;
+    const double *pi = packed + (size_t) i * PACKED;
+    const double *gi = &gradients[(size_t) i * N + M];
+    double *ri = &rates[(size_t) i * VOIGT];
+    const double coefficient_i = coefficient_of_type[type[i]];
+    for (int jj = list.first(i); jj < list.end(i); jj++) {
+      const int j = partners[jj];
+      if (valid[j] == 0.0 || !diffused(i, j)) continue;
+      const double *pj = packed + (size_t) j * PACKED;
+      PairGeometry g;
+      if (!pair_geometry<D, Kernel>(pi + P_X, pi[P_H], pj, g)) continue;
+      double rate[C];
+      stress_diffusion_pair<D>(stress[i], stress[j], gi, &gradients[(size_t) j * N + M], g.dx,
+                               g.r2, g.hij, g.factor, coefficient_i * g.hij, rate);
+      const double vj = pj[P_VOLUME], vi = pi[P_VOLUME];
+      for (int k = 0; k < C; k++) ri[k] += vj * rate[k];
+      if (newton_pair || j < nlocal) {
+        double *rj = &rates[(size_t) j * VOIGT];
+        for (int k = 0; k < C; k++) rj[k] -= vi * rate[k];
+      }
+    }
+  }
+  if (newton_pair) {
+    exchange = RATES;
+    SPHSoilCompat::reverse_comm_pair(comm, owner);
+    exchange = NONE;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the exchanges: the sums and the rates go back to the owners, the gradients (and whether they
+   are trusted) to the ghosts
+------------------------------------------------------------------------- */
+
+int SPHSoilStressDiffusion::pack_forward_comm(int n, int *list, double *buf)
+{
+  const int m = per_atom - moment;
+  int k = 0;
+  for (int i = 0; i < n; i++) {
+    const double *g = &gradients[(size_t) list[i] * per_atom + moment];
+    for (int c = 0; c < m; c++) buf[k++] = g[c];
+    buf[k++] = valid[list[i]];
+  }
+  return k;
+}
+
+void SPHSoilStressDiffusion::unpack_forward_comm(int n, int first, double *buf)
+{
+  const int m = per_atom - moment;
+  int k = 0;
+  for (int i = first; i < first + n; i++) {
+    double *g = &gradients[(size_t) i * per_atom + moment];
+    for (int c = 0; c < m; c++) g[c] = buf[k++];
+    valid[i] = buf[k++];
+  }
+}
+
+int SPHSoilStressDiffusion::pack_reverse_comm(int n, int first, double *buf)
+{
+  const bool sums = exchange == SUMS;
+  const int width = sums ? per_atom : components;
+  int k = 0;
+  for (int i = first; i < first + n; i++) {
+    const double *from = sums ? &gradients[(size_t) i * per_atom] : &rates[(size_t) i * VOIGT];
+    for (int c = 0; c < width; c++) buf[k++] = from[c];
+  }
+  return k;
+}
+
+void SPHSoilStressDiffusion::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  const bool sums = exchange == SUMS;
+  const int width = sums ? per_atom : components;
+  int k = 0;
+  for (int i = 0; i < n; i++) {
+    double *to = sums ? &gradients[(size_t) list[i] * per_atom] : &rates[(size_t) list[i] * VOIGT];
+    for (int c = 0; c < width; c++) to[c] += buf[k++];
+  }
+}
