@@ -4,6 +4,7 @@
 // except those of data files, which the rank that reads the atom raises (1 rank only).
 #include "sph_soil_testing.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <regex>
 
@@ -541,10 +542,10 @@ std::vector<BadInput> cases()
         "Pair sph/soil: h/d up to 1e+04 gives each particle about");
   error("RefinementBeyondTheMemory", "patch",
         {SOIL, "pair_coeff 2 2 wall", "fix integrate all sph/soil cfl 0.1", "fix refine all sph/soil/refine 1 criterion all maxlevel 30",
-         "shell putenv SPH_SOIL_MEMORY_LIMIT=5e7"},
+         "shell putenv SPH_SOIL_MEMORY_LIMIT=1e9"},
         "run 10 post no",
-        "more than the 0.05 GB of the node(s) of this run; lower maxlevel or limit the refinement to "
-        "a region");
+        "and SPH_SOIL_MEMORY_LIMIT gives it 1 GB); lower maxlevel or limit the refinement to a "
+        "region");
   warning("GeostaticAcrossGravity", "walls",
           {"sph_soil/set soil geostatic 0.1 2650 9.81 0.5 vertical x",
            "fix down soil gravity 9.81 vector 0 -1 0"},
@@ -602,6 +603,13 @@ class BadInputs : public SoilTest, public ::testing::WithParamInterface<BadInput
     command("group soil type 1");
     command("sph_soil/set floor wall 0.0 0.02 0.0 0.0 1.0 0.0");
     command("fix integrate soil sph/soil");
+  }
+
+  // (a case may set the node's memory limit with shell putenv: it must not reach the next)
+  void TearDown() override
+  {
+    unsetenv("SPH_SOIL_MEMORY_LIMIT");
+    SoilTest::TearDown();
   }
 
   void run_before(const std::vector<std::string> &lines)

@@ -131,8 +131,9 @@ void PairSPHSoil::warn_soil_in_rigid_bodies()
 /* ----------------------------------------------------------------------
    the pair list's size from the largest h/d: each particle lists about half of those within
    its support (2 h_ij + skin), about (pi or 4 pi / 3) / 2 ((support h + skin) / d)^D of them,
-   4 bytes each. An h far beyond the spacing that cannot fit stops here, naming h, rather than
-   in an allocation failure in the list's build.
+   4 bytes each. An h far beyond the spacing whose list cannot fit in what the ranks and nodes
+   may have (sph_soil_memory.h) stops here, naming h, rather than in an allocation failure in
+   the list's build.
 ------------------------------------------------------------------------- */
 
 void PairSPHSoil::check_list_fits()
@@ -149,14 +150,14 @@ void PairSPHSoil::check_list_fits()
   const double partners =
       0.5 * (dimension == 3 ? 4.0 / 3.0 * MY_PI * reach * reach * reach : MY_PI * reach * reach);
   const double bytes = (double) atom->natoms * partners * sizeof(int);
-  const auto nodes = SPHSoilMemory::nodes(world);
-  if (nodes.bytes > 0.0 && bytes > nodes.bytes)
+  const auto verdict = SPHSoilMemory::check(world, (double) atom->nlocal * partners * sizeof(int));
+  if (!verdict.fits)
     SPHSoilCompat::error_all(
         lmp, FLERR,
         "Pair sph/soil: h/d up to {:.3g} gives each particle about {:.3g} neighbours, "
-        "{:.3g} GB for the pair list of {} particles, more than the {:.3g} GB of the "
-        "node(s) of this run; h is usually 1.2 to 2 times the spacing d = (m/rho)^(1/{})",
-        worst_all, 2.0 * partners, bytes / 1e9, atom->natoms, nodes.bytes / 1e9, dimension);
+        "{:.3g} GB for the pair list of {} particles, more than {}; h is usually 1.2 to 2 "
+        "times the spacing d = (m/rho)^(1/{})",
+        worst_all, 2.0 * partners, bytes / 1e9, atom->natoms, verdict.limit, dimension);
 }
 
 /* ----------------------------------------------------------------------
