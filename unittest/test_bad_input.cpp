@@ -331,7 +331,9 @@ std::vector<BadInput> cases()
   error("FixWithoutAtomStyle", "none", {"region box block 0 1 0 1 0 1", "create_box 1 box"},
         "fix f all sph/soil", "Fix sph/soil requires atom_style sph/soil");
   error("FixUnknownKeyword", "patch", {}, "fix f all sph/soil courant 0.1",
-        "Illegal fix sph/soil keyword courant (allowed: cfl, dtmax, stepping)");
+        "Illegal fix sph/soil keyword courant (allowed: cfl, dtmax, stepping, others)");
+  error("FixOthersUnknown", "patch", {}, "fix f all sph/soil others warn",
+        "Illegal fix sph/soil others warn (allowed: error, allow)");
   error("FixSteppingUnknown", "patch", {}, "fix f all sph/soil stepping individual",
         "Illegal fix sph/soil stepping individual (allowed: global, level)");
   error("FixKeywordWithoutValue", "patch", {}, "fix f all sph/soil cfl",
@@ -552,9 +554,29 @@ std::vector<BadInput> cases()
           "run 0 post no",
           "Pair sph/soil: sph_soil/set geostatic put the overburden along x but gravity points along "
           "y (0 -9.81 0): add 'vertical y' to geostatic");
-  warning("SoilInARigidBody", "walls", {"fix body soil rigid single"}, "run 0 post no",
-          "Fix body (rigid) moves soil particles as a rigid body: a structure is made of wall "
-          "particles (pair_coeff I I wall), soil particles are integrated by fix sph/soil");
+  // soil that fix sph/soil integrates and another fix moves too (issue 47): each fix named
+  const std::string moved_twice =
+      " both move 80 particle(s) (e.g. atom 21 of type 1): fix sph/soil integrates soil and free "
+      "water, and a particle that two fixes move moves twice per step; make a structure of wall "
+      "particles (pair_coeff I I wall), which fix sph/soil never moves, or add 'others allow' to "
+      "fix sph/soil integrate if fix ";
+  error("SoilInARigidBody", "walls", {"fix body soil rigid single"}, "run 0 post no",
+        "Fix sph/soil integrate and fix body (rigid)" + moved_twice + "body is meant to move them too");
+  error("SoilInARigidNveBody", "walls", {"fix body soil rigid/nve single"}, "run 0 post no",
+        "Fix sph/soil integrate and fix body (rigid/nve)" + moved_twice + "body is meant to move them too");
+  error("SoilUnderFixMove", "walls", {"fix lift all move linear 0 0.1 0 units box"}, "run 0 post no",
+        "Fix sph/soil integrate and fix lift (move)" + moved_twice + "lift is meant to move them too");
+  error("SoilUnderFixNve", "walls", {"fix again soil nve"}, "run 0 post no",
+        "Fix sph/soil integrate and fix again (nve)" + moved_twice + "again is meant to move them too");
+  // ('others allow': the user means it; LAMMPS warns of atoms integrated twice itself)
+  warning("SoilUnderFixNveAllowed", "walls",
+          {"unfix integrate", "fix integrate soil sph/soil others allow", "fix again soil nve"},
+          "run 0 post no", "One or more atoms are time integrated more than once");
+  warning("SoilInARigidBodyWithoutIntegrator", "walls", {"unfix integrate", "fix body soil rigid single"},
+          "run 0 post no",
+          "Fix body (rigid) moves soil particles that no fix sph/soil integrates as a rigid body, "
+          "whose stress and density never change: a structure is made of wall particles "
+          "(pair_coeff I I wall), soil particles are integrated by fix sph/soil");
   c.push_back({"DataColumnCount", "data", {"write bad.data " + data_file("1 1 1.0 0.1 1000 0 0.5 0.5")},
                "read_data bad.data", "Incorrect format in Atoms section of data file: 1 1 1.0 0.1 1000 0 "
                "0.5 0.5", false, true, "Incorrect atom format in data file"});

@@ -10,6 +10,7 @@
 #include "domain.h"
 #include "error.h"
 #include "math_const.h"
+#include "modify.h"
 #include "neighbor.h"
 #include "soil_kernels.h"
 #include "soil_refine_split.h"
@@ -114,16 +115,21 @@ void PairSPHSoil::warn_spacing()
                    off.first, off.values[0], off.values[1], off.values[2], off.values[3]);
 }
 
-// A rigid body of soil particles (fix rigid and its variants) moves them as a block, while fix
-// sph/soil integrates them too or their stress never changes: structures are wall particles.
+// A rigid body of soil particles that no fix sph/soil integrates (fix rigid and its variants)
+// moves them as a block whose stress and density never change: structures are wall particles.
+// (Soil that fix sph/soil integrates too is that fix's error, or allowed by its 'others allow'.)
 void PairSPHSoil::warn_soil_in_rigid_bodies()
 {
-  const int *type = atom->type;
+  const int *type = atom->type, *mask = atom->mask;
+  int integrated = 0;    // the groups of the fixes sph/soil
+  for (int f = 0; f < modify->nfix; f++)
+    if (SPHSoilFixes::is_sph_soil_integrator(modify->fix[f])) integrated |= modify->fix[f]->groupbit;
   Fix *rigid = SPHSoilFixes::first_fix_holding(
       lmp, [](Fix *fix) { return fix->rigid_flag != 0; },
-      [&](int i) { return materials.model(type[i]) != nullptr; });
+      [&](int i) { return materials.model(type[i]) != nullptr && !(mask[i] & integrated); });
   if (rigid && comm->me == 0)
-    error->warning(FLERR, "Fix {} ({}) moves soil particles as a rigid body: a structure is made "
+    error->warning(FLERR, "Fix {} ({}) moves soil particles that no fix sph/soil integrates as a "
+                          "rigid body, whose stress and density never change: a structure is made "
                           "of wall particles (pair_coeff I I wall), soil particles are integrated "
                           "by fix sph/soil", rigid->id, rigid->style);
 }

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 namespace SPHSoilInput {
@@ -93,6 +94,19 @@ inline int integer(const char *file, int line, LAMMPS *lmp, const std::string &w
     SPHSoilCompat::error_all(lmp, file, line, "Illegal {} {}: must be in {} to {}", what, text, lo,
                              hi);
   return value;
+}
+
+// The index of `text` among `names` for `what` (e.g. "fix sph/soil stepping"), else an error
+// that lists them: the list a keyword is parsed with is the one its message shows.
+inline int choice(const char *file, int line, LAMMPS *lmp, const std::string &what,
+                  const char *text, const std::vector<std::string> &names)
+{
+  std::string allowed;
+  for (size_t k = 0; k < names.size(); k++) {
+    if (names[k] == text) return (int) k;
+    allowed += (k ? ", " : "") + names[k];
+  }
+  SPHSoilCompat::error_all(lmp, file, line, "Illegal {} {} (allowed: {})", what, text, allowed);
 }
 
 }    // namespace SPHSoilInput
