@@ -98,6 +98,18 @@ std::vector<BadInput> cases()
         "Illegal sph_soil/set mass value 0 for atom 1: must be > 0");
   out_of_range("SetMassInfinite", "patch", {}, "sph_soil/set all mass 1e400",
         "Illegal sph_soil/set mass 1e400: must be a finite number", "1e400");
+  // a word that is no number: the command, keyword, value and range, not LAMMPS's parser's
+  // "Expected floating point parameter" alone
+  error("SetPorePressureNotANumber", "patch", {}, "sph_soil/set all pore_pressure nan",
+        "Illegal sph_soil/set pore_pressure nan: must be a finite number or v_name (an equal- or "
+        "atom-style variable)");
+  error("SetMassNotANumber", "patch", {}, "sph_soil/set all mass inf",
+        "Illegal sph_soil/set mass inf: must be a finite number > 0 or v_name (an equal- or "
+        "atom-style variable)");
+  error("SetLevelNotAnInteger", "patch", {}, "sph_soil/set all level 1.5",
+        "Illegal sph_soil/set level 1.5: must be an integer in 0 to 30");
+  error("SetGeostaticNotANumber", "patch", {}, "sph_soil/set all geostatic 0.3 dense 10 0.5",
+        "Illegal sph_soil/set geostatic density dense: must be a finite number > 0");
   error("SetHNegative", "patch", {}, "sph_soil/set all h -0.5",
         "Illegal sph_soil/set h value -0.5 for atom 1: must be > 0");
   error("SetDensityFromAtomVariable", "patch", {"variable bad atom 1.0-0.01*id"},
@@ -153,6 +165,8 @@ std::vector<BadInput> cases()
         "Illegal pair_style sph/soil alpha -1: must be >= 0");
   out_of_range("PairAlphaInfinite", "patch", {}, "pair_style sph/soil alpha 1e400",
         "Illegal pair_style sph/soil alpha 1e400: must be a finite number >= 0", "1e400");
+  error("PairAlphaNotANumber", "patch", {}, "pair_style sph/soil alpha one",
+        "Illegal pair_style sph/soil alpha one: must be a finite number >= 0");
   error("PairBetaNegative", "patch", {}, "pair_style sph/soil beta -0.5",
         "Illegal pair_style sph/soil beta -0.5: must be >= 0");
   error("PairWall", "patch", {}, "pair_style sph/soil wall sticky",
@@ -342,6 +356,8 @@ std::vector<BadInput> cases()
         "Illegal fix sph/soil cfl 2: must be in (0, 1]");
   out_of_range("FixCflInfinite", "patch", {}, "fix f all sph/soil cfl 1e999",
         "Illegal fix sph/soil cfl 1e999: must be a finite number in (0, 1]", "1e999");
+  error("FixCflNotANumber", "patch", {}, "fix f all sph/soil cfl nan",
+        "Illegal fix sph/soil cfl nan: must be a finite number in (0, 1]");
   error("FixDtmaxNegative", "patch", {}, "fix f all sph/soil cfl 0.1 dtmax -1",
         "Illegal fix sph/soil dtmax -1: must be > 0");
   error("FixDtmaxWithoutCfl", "patch", {}, "fix f all sph/soil dtmax 1e-5",
@@ -388,6 +404,8 @@ std::vector<BadInput> cases()
         "Illegal fix sph/soil/refine command: expected 'fix ID group sph/soil/refine N keyword value ...'");
   error("RefineEveryZero", "patch", {}, "fix r all sph/soil/refine 0",
         "Illegal fix sph/soil/refine N 0: must be >= 1");
+  error("RefineEveryNotAnInteger", "patch", {}, "fix r all sph/soil/refine ten",
+        "Illegal fix sph/soil/refine N ten: must be an integer >= 1");
   error("RefineThresholdNegative", "patch", {}, "fix r all sph/soil/refine 10 threshold -1",
         "Illegal fix sph/soil/refine threshold -1: must be >= 0");
   out_of_range("RefineThresholdInfinite", "patch", {}, "fix r all sph/soil/refine 10 threshold 1e400",

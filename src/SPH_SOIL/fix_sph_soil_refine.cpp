@@ -59,9 +59,7 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
   if (!atom->style_match("sph/soil"))
     SPHSoilCompat::error_all(lmp, FLERR, "Fix sph/soil/refine requires atom_style sph/soil");
 
-  nevery = utils::inumeric(FLERR, arg[3], false, lmp);
-  if (nevery < 1)
-    SPHSoilCompat::error_all(lmp, FLERR, "Illegal fix sph/soil/refine N {}: must be >= 1", nevery);
+  nevery = SPHSoilInput::integer(FLERR, lmp, "fix sph/soil/refine N", arg[3], 1);
 
   // a keyword's time > 0, or no (0)
   auto time_or_no = [&](const std::string &keyword, const char *value, const char *what) {
