@@ -260,6 +260,18 @@ std::vector<BadInput> cases()
         "material of type(s) 2: water bulk modulus K_w = -2e7 must be finite and > 0 (Pa)");
   error("CoeffWaterDensityNegative", "patch", {}, "pair_coeff 2 2 water -1000 2e7",
         "material of type(s) 2: water needs its density rho_w, finite and > 0, got -1000");
+  // a saturated soil's words on free water, and a value too many
+  error("CoeffWaterPorosity", "patch", {}, "pair_coeff 2 2 water 1000 porosity 0.4",
+        "material of type(s) 2: water takes no 'porosity' (free water is 'water rho_w K_w'); "
+        "porosity is a word of a saturated soil: 'soil rho0 model parameters porosity n "
+        "permeability k'");
+  error("CoeffWaterPermeability", "patch", {}, "pair_coeff 2 2 water 1000 2e7 permeability 1e-4",
+        "material of type(s) 2: water takes no 'permeability' (free water is 'water rho_w K_w'); "
+        "permeability is a word of a saturated soil: 'soil rho0 model parameters porosity n "
+        "permeability k'");
+  error("CoeffWaterExtraValue", "patch", {}, "pair_coeff 2 2 water 1000 2e7 0.5",
+        "material of type(s) 2: water takes one value after its density, its bulk modulus K_w (Pa) "
+        "('water rho_w K_w'), got 2: 2e7 0.5");
   error("CoeffWallDrainedTwice", "patch", {}, "pair_coeff 2 2 wall drained drained",
         "material of type(s) 2: wall drained given twice");
   error("DrySoilWithPorePressure", "walls", {"sph_soil/set soil pore_pressure 100"}, "run 0 post no",
@@ -287,6 +299,12 @@ std::vector<BadInput> cases()
   error("CoeffTypeOutOfRange", "patch", {}, "pair_coeff 3 3 wall", "Numeric index 3 is out of bounds (1-2)");
   error("FileNameCount", "patch", {}, "pair_coeff * * good.soil sand",
         "a material file needs one name (or NULL) per atom type, 2 expected, 1 given");
+  // NULL leaves a type to another style of pair_style hybrid; NULL for every type sets nothing
+  error("FileAllNull", "patch", {}, "pair_coeff * * good.soil NULL NULL",
+        "Incorrect args for pair_coeff sph/soil: every type of 'pair_coeff * * good.soil' is NULL, "
+        "which gives no type a material (NULL leaves a type to another style of pair_style "
+        "hybrid); name one of the file's materials (sand, rock) for each type of pair_style "
+        "sph/soil");
   error("FileMissing", "patch", {}, "pair_coeff * * nosuchfile.soil sand rock",
         "Cannot open material file nosuchfile.soil for pair_coeff sph/soil");
   error("FileNameNotInFile", "patch", {}, "pair_coeff * * good.soil granite rock",
@@ -693,6 +711,37 @@ TEST_P(BadInputs, StopsOrWarnsWithTheExactMessage)
     EXPECT_LAMMPS_ERROR(".*(" + escape(c.message) + "|" + escape(c.lammps_message) + ").*",
                         command(c.command));
   }
+}
+
+// not bad input: NULL in a material file's line leaves the type to another style of pair_style
+// hybrid, which takes it (the LAMMPS convention, as for eam/alloy files)
+TEST_F(SoilTest, NullInAMaterialFileLeavesTheTypeToAnotherHybridStyle)
+{
+  HIDE_OUTPUT([&] {
+    for (const auto &line :
+         {"dimension 2", "boundary p p p", "atom_style sph/soil", "atom_modify map array",
+          "lattice sq 0.01 origin 0.5 0.5 0.0", "region box block 0 10 0 10 -0.5 0.5",
+          "create_box 2 box", "create_atoms 1 box", "region top block INF INF 8 10 INF INF",
+          "set region top type 2", "sph_soil/set all mass 0.265 h 0.012 density 1850"})
+      command(line);
+    if (rank() == 0) std::ofstream("good.soil") << FILES[0][1];
+    MPI_Barrier(MPI_COMM_WORLD);
+    command("pair_style hybrid sph/soil zero 0.02");
+    command("pair_coeff * * sph/soil good.soil sand NULL");
+    command("pair_coeff 1 2 zero");
+    command("pair_coeff 2 2 zero");
+    command("fix integrate all sph/soil");
+    command("timestep 1e-5");
+  });
+  std::string thrown;
+  ::testing::internal::CaptureStdout();
+  try {
+    command("run 1 post no");
+  } catch (LAMMPSException &e) {
+    thrown = e.what();
+  }
+  ::testing::internal::GetCapturedStdout();
+  EXPECT_EQ(thrown, "");
 }
 
 INSTANTIATE_TEST_SUITE_P(SPHSoil, BadInputs, ::testing::ValuesIn(cases()),
