@@ -613,9 +613,17 @@ std::vector<BadInput> cases()
           "Fix body (rigid) moves soil particles that no fix sph/soil integrates as a rigid body, "
           "whose stress and density never change: a structure is made of wall particles "
           "(pair_coeff I I wall), soil particles are integrated by fix sph/soil");
+  // A line with a wrong count of values: LAMMPS counts them before the atom style sees the line
+  // (Atom::data_atoms, data_vels, in every release from 29Sep2021 to 4Jul2026), so the message
+  // is LAMMPS's, which shows the line; the columns are in doc/atom_style_sph_soil.rst, where
+  // LAMMPS's error page sends the user (its "data file" error, err0002)
   c.push_back({"DataColumnCount", "data", {"write bad.data " + data_file("1 1 1.0 0.1 1000 0 0.5 0.5")},
                "read_data bad.data", "Incorrect format in Atoms section of data file: 1 1 1.0 0.1 1000 0 "
                "0.5 0.5", false, true, "Incorrect atom format in data file"});
+  c.push_back({"DataVelocityColumnCount", "data",
+               {"write bad.data " + data_file("1 1 1.0 0.1 1000 0 0.5 0.5 0", "1 0 0 0 -1 -1")},
+               "read_data bad.data", "Incorrect format in Velocities section of data file: 1 0 0 0 -1 -1",
+               false, true, "Incorrect velocity format in data file"});
   return c;
 }
 
