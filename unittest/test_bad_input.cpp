@@ -4,6 +4,7 @@
 // except those of data files, which the rank that reads the atom raises (1 rank only).
 #include "sph_soil_testing.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <regex>
 
@@ -97,6 +98,18 @@ std::vector<BadInput> cases()
         "Illegal sph_soil/set mass value 0 for atom 1: must be > 0");
   out_of_range("SetMassInfinite", "patch", {}, "sph_soil/set all mass 1e400",
         "Illegal sph_soil/set mass 1e400: must be a finite number", "1e400");
+  // a word that is no number: the command, keyword, value and range, not LAMMPS's parser's
+  // "Expected floating point parameter" alone
+  error("SetPorePressureNotANumber", "patch", {}, "sph_soil/set all pore_pressure nan",
+        "Illegal sph_soil/set pore_pressure nan: must be a finite number or v_name (an equal- or "
+        "atom-style variable)");
+  error("SetMassNotANumber", "patch", {}, "sph_soil/set all mass inf",
+        "Illegal sph_soil/set mass inf: must be a finite number > 0 or v_name (an equal- or "
+        "atom-style variable)");
+  error("SetLevelNotAnInteger", "patch", {}, "sph_soil/set all level 1.5",
+        "Illegal sph_soil/set level 1.5: must be an integer in 0 to 30");
+  error("SetGeostaticNotANumber", "patch", {}, "sph_soil/set all geostatic 0.3 dense 10 0.5",
+        "Illegal sph_soil/set geostatic density dense: must be a finite number > 0");
   error("SetHNegative", "patch", {}, "sph_soil/set all h -0.5",
         "Illegal sph_soil/set h value -0.5 for atom 1: must be > 0");
   error("SetDensityFromAtomVariable", "patch", {"variable bad atom 1.0-0.01*id"},
@@ -156,6 +169,8 @@ std::vector<BadInput> cases()
         "Illegal pair_style sph/soil alpha -1: must be >= 0");
   out_of_range("PairAlphaInfinite", "patch", {}, "pair_style sph/soil alpha 1e400",
         "Illegal pair_style sph/soil alpha 1e400: must be a finite number >= 0", "1e400");
+  error("PairAlphaNotANumber", "patch", {}, "pair_style sph/soil alpha one",
+        "Illegal pair_style sph/soil alpha one: must be a finite number >= 0");
   error("PairBetaNegative", "patch", {}, "pair_style sph/soil beta -0.5",
         "Illegal pair_style sph/soil beta -0.5: must be >= 0");
   error("PairWall", "patch", {}, "pair_style sph/soil wall sticky",
@@ -249,6 +264,18 @@ std::vector<BadInput> cases()
         "material of type(s) 2: water bulk modulus K_w = -2e7 must be finite and > 0 (Pa)");
   error("CoeffWaterDensityNegative", "patch", {}, "pair_coeff 2 2 water -1000 2e7",
         "material of type(s) 2: water needs its density rho_w, finite and > 0, got -1000");
+  // a saturated soil's words on free water, and a value too many
+  error("CoeffWaterPorosity", "patch", {}, "pair_coeff 2 2 water 1000 porosity 0.4",
+        "material of type(s) 2: water takes no 'porosity' (free water is 'water rho_w K_w'); "
+        "porosity is a word of a saturated soil: 'soil rho0 model parameters porosity n "
+        "permeability k'");
+  error("CoeffWaterPermeability", "patch", {}, "pair_coeff 2 2 water 1000 2e7 permeability 1e-4",
+        "material of type(s) 2: water takes no 'permeability' (free water is 'water rho_w K_w'); "
+        "permeability is a word of a saturated soil: 'soil rho0 model parameters porosity n "
+        "permeability k'");
+  error("CoeffWaterExtraValue", "patch", {}, "pair_coeff 2 2 water 1000 2e7 0.5",
+        "material of type(s) 2: water takes one value after its density, its bulk modulus K_w (Pa) "
+        "('water rho_w K_w'), got 2: 2e7 0.5");
   error("CoeffWallDrainedTwice", "patch", {}, "pair_coeff 2 2 wall drained drained",
         "material of type(s) 2: wall drained given twice");
   error("DrySoilWithPorePressure", "walls", {"sph_soil/set soil pore_pressure 100"}, "run 0 post no",
@@ -276,6 +303,12 @@ std::vector<BadInput> cases()
   error("CoeffTypeOutOfRange", "patch", {}, "pair_coeff 3 3 wall", "Numeric index 3 is out of bounds (1-2)");
   error("FileNameCount", "patch", {}, "pair_coeff * * good.soil sand",
         "a material file needs one name (or NULL) per atom type, 2 expected, 1 given");
+  // NULL leaves a type to another style of pair_style hybrid; NULL for every type sets nothing
+  error("FileAllNull", "patch", {}, "pair_coeff * * good.soil NULL NULL",
+        "Incorrect args for pair_coeff sph/soil: every type of 'pair_coeff * * good.soil' is NULL, "
+        "which gives no type a material (NULL leaves a type to another style of pair_style "
+        "hybrid); name one of the file's materials (sand, rock) for each type of pair_style "
+        "sph/soil");
   error("FileMissing", "patch", {}, "pair_coeff * * nosuchfile.soil sand rock",
         "Cannot open material file nosuchfile.soil for pair_coeff sph/soil");
   error("FileNameNotInFile", "patch", {}, "pair_coeff * * good.soil granite rock",
@@ -334,7 +367,9 @@ std::vector<BadInput> cases()
   error("FixWithoutAtomStyle", "none", {"region box block 0 1 0 1 0 1", "create_box 1 box"},
         "fix f all sph/soil", "Fix sph/soil requires atom_style sph/soil");
   error("FixUnknownKeyword", "patch", {}, "fix f all sph/soil courant 0.1",
-        "Illegal fix sph/soil keyword courant (allowed: cfl, dtmax, stepping)");
+        "Illegal fix sph/soil keyword courant (allowed: cfl, dtmax, stepping, others)");
+  error("FixOthersUnknown", "patch", {}, "fix f all sph/soil others warn",
+        "Illegal fix sph/soil others warn (allowed: error, allow)");
   error("FixSteppingUnknown", "patch", {}, "fix f all sph/soil stepping individual",
         "Illegal fix sph/soil stepping individual (allowed: global, level)");
   error("FixKeywordWithoutValue", "patch", {}, "fix f all sph/soil cfl",
@@ -343,6 +378,8 @@ std::vector<BadInput> cases()
         "Illegal fix sph/soil cfl 2: must be in (0, 1]");
   out_of_range("FixCflInfinite", "patch", {}, "fix f all sph/soil cfl 1e999",
         "Illegal fix sph/soil cfl 1e999: must be a finite number in (0, 1]", "1e999");
+  error("FixCflNotANumber", "patch", {}, "fix f all sph/soil cfl nan",
+        "Illegal fix sph/soil cfl nan: must be a finite number in (0, 1]");
   error("FixDtmaxNegative", "patch", {}, "fix f all sph/soil cfl 0.1 dtmax -1",
         "Illegal fix sph/soil dtmax -1: must be > 0");
   error("FixDtmaxWithoutCfl", "patch", {}, "fix f all sph/soil dtmax 1e-5",
@@ -389,6 +426,8 @@ std::vector<BadInput> cases()
         "Illegal fix sph/soil/refine command: expected 'fix ID group sph/soil/refine N keyword value ...'");
   error("RefineEveryZero", "patch", {}, "fix r all sph/soil/refine 0",
         "Illegal fix sph/soil/refine N 0: must be >= 1");
+  error("RefineEveryNotAnInteger", "patch", {}, "fix r all sph/soil/refine ten",
+        "Illegal fix sph/soil/refine N ten: must be an integer >= 1");
   error("RefineThresholdNegative", "patch", {}, "fix r all sph/soil/refine 10 threshold -1",
         "Illegal fix sph/soil/refine threshold -1: must be >= 0");
   out_of_range("RefineThresholdInfinite", "patch", {}, "fix r all sph/soil/refine 10 threshold 1e400",
@@ -545,22 +584,50 @@ std::vector<BadInput> cases()
         "Pair sph/soil: h/d up to 1e+04 gives each particle about");
   error("RefinementBeyondTheMemory", "patch",
         {SOIL, "pair_coeff 2 2 wall", "fix integrate all sph/soil cfl 0.1", "fix refine all sph/soil/refine 1 criterion all maxlevel 30",
-         "shell putenv SPH_SOIL_MEMORY_LIMIT=5e7"},
+         "shell putenv SPH_SOIL_MEMORY_LIMIT=1e9"},
         "run 10 post no",
-        "more than the 0.05 GB of the node(s) of this run; lower maxlevel or limit the refinement to "
-        "a region");
+        "and SPH_SOIL_MEMORY_LIMIT gives it 1 GB); lower maxlevel or limit the refinement to a "
+        "region");
   warning("GeostaticAcrossGravity", "walls",
           {"sph_soil/set soil geostatic 0.1 2650 9.81 0.5 vertical x",
            "fix down soil gravity 9.81 vector 0 -1 0"},
           "run 0 post no",
           "Pair sph/soil: sph_soil/set geostatic put the overburden along x but gravity points along "
           "y (0 -9.81 0): add 'vertical y' to geostatic");
-  warning("SoilInARigidBody", "walls", {"fix body soil rigid single"}, "run 0 post no",
-          "Fix body (rigid) moves soil particles as a rigid body: a structure is made of wall "
-          "particles (pair_coeff I I wall), soil particles are integrated by fix sph/soil");
+  // soil that fix sph/soil integrates and another fix moves too (issue 47): each fix named
+  const std::string moved_twice =
+      " both move 80 particle(s) (e.g. atom 21 of type 1): fix sph/soil integrates soil and free "
+      "water, and a particle that two fixes move moves twice per step; make a structure of wall "
+      "particles (pair_coeff I I wall), which fix sph/soil never moves, or add 'others allow' to "
+      "fix sph/soil integrate if fix ";
+  error("SoilInARigidBody", "walls", {"fix body soil rigid single"}, "run 0 post no",
+        "Fix sph/soil integrate and fix body (rigid)" + moved_twice + "body is meant to move them too");
+  error("SoilInARigidNveBody", "walls", {"fix body soil rigid/nve single"}, "run 0 post no",
+        "Fix sph/soil integrate and fix body (rigid/nve)" + moved_twice + "body is meant to move them too");
+  error("SoilUnderFixMove", "walls", {"fix lift all move linear 0 0.1 0 units box"}, "run 0 post no",
+        "Fix sph/soil integrate and fix lift (move)" + moved_twice + "lift is meant to move them too");
+  error("SoilUnderFixNve", "walls", {"fix again soil nve"}, "run 0 post no",
+        "Fix sph/soil integrate and fix again (nve)" + moved_twice + "again is meant to move them too");
+  // ('others allow': the user means it; LAMMPS warns of atoms integrated twice itself)
+  warning("SoilUnderFixNveAllowed", "walls",
+          {"unfix integrate", "fix integrate soil sph/soil others allow", "fix again soil nve"},
+          "run 0 post no", "One or more atoms are time integrated more than once");
+  warning("SoilInARigidBodyWithoutIntegrator", "walls", {"unfix integrate", "fix body soil rigid single"},
+          "run 0 post no",
+          "Fix body (rigid) moves soil particles that no fix sph/soil integrates as a rigid body, "
+          "whose stress and density never change: a structure is made of wall particles "
+          "(pair_coeff I I wall), soil particles are integrated by fix sph/soil");
+  // A line with a wrong count of values: LAMMPS counts them before the atom style sees the line
+  // (Atom::data_atoms, data_vels, in every release from 29Sep2021 to 4Jul2026), so the message
+  // is LAMMPS's, which shows the line; the columns are in doc/atom_style_sph_soil.rst, where
+  // LAMMPS's error page sends the user (its "data file" error, err0002)
   c.push_back({"DataColumnCount", "data", {"write bad.data " + data_file("1 1 1.0 0.1 1000 0 0.5 0.5")},
                "read_data bad.data", "Incorrect format in Atoms section of data file: 1 1 1.0 0.1 1000 0 "
                "0.5 0.5", false, true, "Incorrect atom format in data file"});
+  c.push_back({"DataVelocityColumnCount", "data",
+               {"write bad.data " + data_file("1 1 1.0 0.1 1000 0 0.5 0.5 0", "1 0 0 0 -1 -1")},
+               "read_data bad.data", "Incorrect format in Velocities section of data file: 1 0 0 0 -1 -1",
+               false, true, "Incorrect velocity format in data file"});
   return c;
 }
 
@@ -608,6 +675,13 @@ class BadInputs : public SoilTest, public ::testing::WithParamInterface<BadInput
     command("fix integrate soil sph/soil");
   }
 
+  // (a case may set the node's memory limit with shell putenv: it must not reach the next)
+  void TearDown() override
+  {
+    unsetenv("SPH_SOIL_MEMORY_LIMIT");
+    SoilTest::TearDown();
+  }
+
   void run_before(const std::vector<std::string> &lines)
   {
     for (const auto &line : lines) {
@@ -649,6 +723,37 @@ TEST_P(BadInputs, StopsOrWarnsWithTheExactMessage)
     EXPECT_LAMMPS_ERROR(".*(" + escape(c.message) + "|" + escape(c.lammps_message) + ").*",
                         command(c.command));
   }
+}
+
+// not bad input: NULL in a material file's line leaves the type to another style of pair_style
+// hybrid, which takes it (the LAMMPS convention, as for eam/alloy files)
+TEST_F(SoilTest, NullInAMaterialFileLeavesTheTypeToAnotherHybridStyle)
+{
+  HIDE_OUTPUT([&] {
+    for (const auto &line :
+         {"dimension 2", "boundary p p p", "atom_style sph/soil", "atom_modify map array",
+          "lattice sq 0.01 origin 0.5 0.5 0.0", "region box block 0 10 0 10 -0.5 0.5",
+          "create_box 2 box", "create_atoms 1 box", "region top block INF INF 8 10 INF INF",
+          "set region top type 2", "sph_soil/set all mass 0.265 h 0.012 density 1850"})
+      command(line);
+    if (rank() == 0) std::ofstream("good.soil") << FILES[0][1];
+    MPI_Barrier(MPI_COMM_WORLD);
+    command("pair_style hybrid sph/soil zero 0.02");
+    command("pair_coeff * * sph/soil good.soil sand NULL");
+    command("pair_coeff 1 2 zero");
+    command("pair_coeff 2 2 zero");
+    command("fix integrate all sph/soil");
+    command("timestep 1e-5");
+  });
+  std::string thrown;
+  ::testing::internal::CaptureStdout();
+  try {
+    command("run 1 post no");
+  } catch (LAMMPSException &e) {
+    thrown = e.what();
+  }
+  ::testing::internal::GetCapturedStdout();
+  EXPECT_EQ(thrown, "");
 }
 
 INSTANTIATE_TEST_SUITE_P(SPHSoil, BadInputs, ::testing::ValuesIn(cases()),

@@ -9,7 +9,14 @@ that the message is in what the process wrote to its standard output (the screen
 file:
 - a data file with a negative mass: an error of the rank that reads the atom (error->one),
   the path whose message LAMMPS 29Sep2021 lost with exceptions on;
-- a run that goes unstable: a collective error (every rank stops with the same message).
+- a run that goes unstable: a collective error (every rank stops with the same message);
+- a runaway refinement (every particle split at every step down to level 30, as threshold 0 does
+  in a deforming soil) under a process limit, `ulimit -v 3000000` over
+  mpirun and its ranks, as a batch system sets one: the memory guard of fix sph/soil/refine
+  stops it with its message, naming RLIMIT_AS, before an allocation fails (no bad_alloc, no
+  "Failed to allocate", no signal). It takes 7 splits, a few seconds. Not under AddressSanitizer
+  (tools/sanitize.sh), which reserves terabytes of address space for its shadow memory: no
+  process can start under such a limit there.
 A race can hide the second case's loss (LAMMPS 29Sep2021 does not flush the log at an error,
 and mpirun may kill rank 0 when another rank exits first), so the test also reads the package's
 sources: every error is raised through SPHSoilCompat::error_all/error_one, which flush.
@@ -67,8 +74,29 @@ neighbor 0.002 bin
 run 10
 """
 
+RUNAWAY = """units si
+dimension 2
+boundary p p p
+atom_style sph/soil
+atom_modify map array
+lattice sq 0.01 origin 0.5 0.5 0.0
+region box block 0 10 0 10 -0.5 0.5
+create_box 1 box
+create_atoms 1 box
+sph_soil/set all mass 0.265 h 0.012 density 2650
+pair_style sph/soil
+pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0
+fix integrate all sph/soil cfl 0.1
+fix refine all sph/soil/refine 1 criterion all maxlevel 30
+run 20
+"""
+# the issue's limit, in kB: Open MPI's mpirun and ranks start in about 0.2 GB of address space
+ADDRESS_SPACE_KB = 3000000
+# what an allocation failure or a crash writes instead of the guard's message
+CRASHES = ('bad_alloc', 'Failed to allocate', 'Failed to reallocate', 'signal', 'Signal')
 
-def run_case(args, name, np, inputs, files, message, in_log=True):
+
+def run_case(args, name, np, inputs, files, message, in_log=True, address_space_kb=None):
     work = os.path.join(args.workdir, name)
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
@@ -78,26 +106,39 @@ def run_case(args, name, np, inputs, files, message, in_log=True):
     with open(os.path.join(work, 'in.case'), 'w') as f:
         f.write(inputs)
     # one rank: lmp alone, as a user runs it; more: under mpirun. LAMMPS's own log.lammps.
+    # A process limit: a shell sets it and runs the whole launch (mpirun and its ranks inherit it).
+    outer = ['bash', '-c', f'ulimit -v {address_space_kb} && exec "$@"', 'bash'] if address_space_kb else []
     with open(os.path.join(work, 'screen'), 'w') as screen:
         run = Lammps(args.lmp, args.mpirun).run('in.case', work, np=np if np > 1 else None, log=None,
                                                screen=None, stdout=screen, stderr=subprocess.STDOUT,
-                                               timeout=120)
+                                               timeout=120, outer=outer)
     screen_text = open(os.path.join(work, 'screen')).read()
     log_path = os.path.join(work, 'log.lammps')
     log_text = open(log_path).read() if os.path.exists(log_path) else ''
     problems = []
     if run.returncode == 0:
         problems.append('lmp exited with status 0')
-    if message not in screen_text:
+    if run.returncode < 0:
+        problems.append(f'lmp was killed by signal {-run.returncode}')
+    # (a message given in parts: each must be there, the numbers between them may vary)
+    parts = [message] if isinstance(message, str) else message
+    if not all(part in screen_text for part in parts):
         problems.append('message not on the screen')
-    if in_log and message not in log_text:
+    if in_log and not all(part in log_text for part in parts):
         problems.append('message not in log.lammps')
+    problems += [f'the screen shows "{crash}"' for crash in CRASHES if crash in screen_text]
     status = 'ok' if not problems else 'FAILED: ' + '; '.join(problems)
     print(f'{name} ({np} rank{"s" if np > 1 else ""}): {status}')
     if problems:
         print('--- screen (last 15 lines):\n' + ''.join(screen_text.splitlines(True)[-15:]))
         print('--- log.lammps (last 10 lines):\n' + ''.join(log_text.splitlines(True)[-10:]))
     return not problems
+
+
+def sanitized(lmp):
+    """Whether lmp runs under AddressSanitizer (it links libasan)."""
+    linked = subprocess.run(['ldd', lmp], capture_output=True, text=True).stdout
+    return 'libasan' in linked
 
 
 def raw_error_calls(source_dir):
@@ -139,6 +180,18 @@ def main():
     for np in (1, 2):
         ok &= run_case(args, f'unstable_run_np{np}', np, UNSTABLE, {},
                        'became unstable at step 1')
+    # the memory guard under a process limit (a collective error: the first rank short of
+    # memory names itself)
+    if sanitized(args.lmp):
+        print('refinement_under_ulimit: skipped, lmp runs under AddressSanitizer')
+    else:
+        for np in (1, 2):
+            ok &= run_case(args, f'refinement_under_ulimit_np{np}', np, RUNAWAY, {},
+                           ['ERROR: Fix sph/soil/refine: splitting 409600 particles at step 7 would '
+                            'make 1.64e+06 particles', 'more than rank 0 may allocate (it would need',
+                            'and RLIMIT_AS (ulimit -v) limits its address space to 3.07 GB, of which '
+                            'it holds', 'lower maxlevel or limit the refinement to a region'],
+                           address_space_kb=ADDRESS_SPACE_KB)
     sys.exit(0 if ok else 1)
 
 

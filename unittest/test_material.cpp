@@ -262,7 +262,16 @@ TEST(MaterialFile, RejectsBadPoreWaterAndWater)
           "line 1: material w: water needs its bulk modulus K_w (Pa) after its density, got 0 value(s)");
   rejects("w water 1000 0\n", "line 1: material w: water bulk modulus K_w = 0 must be finite and > 0 (Pa)");
   rejects("w water 1000 2e7 3\n",
-          "line 1: material w: water needs its bulk modulus K_w (Pa) after its density, got 2 value(s)");
+          "line 1: material w: water takes one value after its density, its bulk modulus K_w (Pa) "
+          "('water rho_w K_w'), got 2: 2e7 3");
+  // a saturated soil's word on water, wherever it stands: where it belongs, not K_w blamed
+  rejects("w water 1000 porosity 0.4\n",
+          "line 1: material w: water takes no 'porosity' (free water is 'water rho_w K_w'); porosity "
+          "is a word of a saturated soil: 'soil rho0 model parameters porosity n permeability k'");
+  rejects("w water 1000 2e7 water_modulus 2e7\n",
+          "line 1: material w: water takes no 'water_modulus' (free water is 'water rho_w K_w'); "
+          "water_modulus is a word of a saturated soil: 'soil rho0 model parameters porosity n "
+          "permeability k'");
   rejects("w wall drained drained\n", "line 1: material w: wall drained given twice");
 }
 

@@ -31,6 +31,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <utility>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -62,28 +65,35 @@ FixSPHSoil::FixSPHSoil(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   extvector = 0;
 
+  // the keywords and how each reads its value: the one list of them, which the error shows
+  using namespace SPHSoilInput;
+  const std::vector<std::pair<std::string, std::function<void(const char *)>>> keywords = {
+      {"cfl", [&](const char *value) {
+         cfl = number(FLERR, lmp, "fix sph/soil cfl", value, between(0.0, 1.0, true, false));
+       }},
+      {"dtmax", [&](const char *value) {
+         max_dt = number(FLERR, lmp, "fix sph/soil dtmax", value, above(0.0));
+       }},
+      {"stepping", [&](const char *value) {
+         schedule.per_level = choice(FLERR, lmp, "fix sph/soil stepping", value, {"global", "level"}) == 1;
+       }},
+      {"others", [&](const char *value) {
+         others_allowed = choice(FLERR, lmp, "fix sph/soil others", value, {"error", "allow"}) == 1;
+       }},
+  };
   for (int iarg = 3; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
       SPHSoilCompat::error_all(lmp, FLERR, "Illegal fix sph/soil command: keyword {} needs a value",
                                arg[iarg]);
-    if (strcmp(arg[iarg], "cfl") == 0) {
-      cfl = SPHSoilInput::number(FLERR, lmp, "fix sph/soil cfl", arg[iarg + 1],
-                                 SPHSoilInput::between(0.0, 1.0, true, false));
-    } else if (strcmp(arg[iarg], "dtmax") == 0) {
-      max_dt = SPHSoilInput::number(FLERR, lmp, "fix sph/soil dtmax", arg[iarg + 1],
-                                    SPHSoilInput::above(0.0));
-    } else if (strcmp(arg[iarg], "stepping") == 0) {
-      if (strcmp(arg[iarg + 1], "level") == 0)
-        schedule.per_level = true;
-      else if (strcmp(arg[iarg + 1], "global") == 0)
-        schedule.per_level = false;
-      else
-        SPHSoilCompat::error_all(
-            lmp, FLERR, "Illegal fix sph/soil stepping {} (allowed: global, level)", arg[iarg + 1]);
-    } else {
-      SPHSoilCompat::error_all(
-          lmp, FLERR, "Illegal fix sph/soil keyword {} (allowed: cfl, dtmax, stepping)", arg[iarg]);
+    auto keyword = std::find_if(keywords.begin(), keywords.end(),
+                                [&](const decltype(keywords[0]) &k) { return k.first == arg[iarg]; });
+    if (keyword == keywords.end()) {
+      std::string allowed;
+      for (const auto &k : keywords) allowed += (allowed.empty() ? "" : ", ") + k.first;
+      SPHSoilCompat::error_all(lmp, FLERR, "Illegal fix sph/soil keyword {} (allowed: {})", arg[iarg],
+                               allowed);
     }
+    keyword->second(arg[iarg + 1]);
   }
   if (schedule.per_level) nstate = NSTATE_LEVELS;
   avec = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
@@ -162,23 +172,7 @@ void FixSPHSoil::init()
     }
   }
 
-  // one integrator per particle: two fixes sph/soil over the same particles would each
-  // advance them, a step of 2 dt
-  const int *mask = atom->mask;
-  for (int ifix = 0; ifix < modify->nfix; ifix++) {
-    const Fix *other = modify->fix[ifix];
-    if (other == this || !dynamic_cast<const FixSPHSoil *>(other)) continue;
-    const int otherbit = other->groupbit;
-    const auto twice = SPHSoilOffenders::find_offenders(
-        lmp, [&](int i) { return (mask[i] & groupbit) && (mask[i] & otherbit); },
-        [](int, double *) {});
-    if (twice)
-      SPHSoilCompat::error_all(
-          lmp, FLERR,
-          "Fix sph/soil {} and {} both integrate {} particle(s) (e.g. atom {}); "
-          "integrate each particle with one fix",
-          id, other->id, twice.count, twice.first);
-  }
+  check_integrators();
   // a group without soil particles is integrated by no one (wall particles never move)
   bigint soil = 0, all_soil = 0;
   for (int i = 0; i < atom->nlocal; i++)
@@ -205,6 +199,45 @@ void FixSPHSoil::init()
     update->dt_default = 0;
   }
   reset_dt();
+}
+
+/* ----------------------------------------------------------------------
+   one integrator per particle. Two fixes sph/soil over the same particles would each advance
+   them, a step of 2 dt. Another fix that moves atoms (fix rigid and its variants, fix move, fix
+   nve, ...: SPHSoilFixes::moves_atoms) would move the soil and free water this fix integrates a
+   second time each step, while their density and stress follow this fix alone: an error too,
+   unless 'others allow' says the user means it. Wall particles are never integrated here, so
+   structures of wall particles under those fixes stay legal. Collective.
+------------------------------------------------------------------------- */
+
+void FixSPHSoil::check_integrators()
+{
+  const int *mask = atom->mask;
+  for (int ifix = 0; ifix < modify->nfix; ifix++) {
+    Fix *other = modify->fix[ifix];
+    if (other == this) continue;
+    const bool integrator = dynamic_cast<FixSPHSoil *>(other) != nullptr;
+    if (!integrator && (others_allowed || !SPHSoilFixes::moves_atoms(other))) continue;
+    const int otherbit = other->groupbit;
+    const auto both = SPHSoilOffenders::find_offenders(
+        lmp, [&](int i) { return integrated(i) && (mask[i] & otherbit); },
+        [&](int i, double *values) { values[0] = atom->type[i]; });
+    if (!both) continue;
+    if (integrator)
+      SPHSoilCompat::error_all(
+          lmp, FLERR,
+          "Fix sph/soil {} and {} both integrate {} particle(s) (e.g. atom {}); "
+          "integrate each particle with one fix",
+          id, other->id, both.count, both.first);
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Fix sph/soil {} and fix {} ({}) both move {} particle(s) (e.g. atom {} of type {}): "
+        "fix sph/soil integrates soil and free water, and a particle that two fixes move "
+        "moves twice per step; make a structure of wall particles (pair_coeff I I wall), which "
+        "fix sph/soil never moves, or add 'others allow' to fix sph/soil {} if fix {} is meant "
+        "to move them too",
+        id, other->id, other->style, both.count, both.first, (int) both.values[0], id, other->id);
+  }
 }
 
 /* ---------------------------------------------------------------------- */

@@ -80,6 +80,9 @@ class FixSPHSoil : public Fix {
   double cfl;           // adaptive time step dt = cfl * min h / c_p (0: fixed time step)
   double stable_cfl;    // largest cfl accepted for a user-fixed time step
   double max_dt;        // upper bound of the adaptive step (0: none)
+  // 'others allow': other fixes (fix rigid, fix move, fix nve, ...) may move particles this fix
+  // integrates; by default a run stops (check_integrators())
+  bool others_allowed = false;
   // the pore pressure's largest diffusivity (soil_pore_water.h; 0 without saturated soil) and
   // the bound it puts on the step, dt <= DIFFUSION_NUMBER h^2 / D
   double max_diffusivity;
@@ -155,6 +158,7 @@ class FixSPHSoil : public Fix {
   void save_rates(int i) const;
   void restore_rates(int i);
 
+  void check_integrators();
   bool integrated(int i) const
   {
     const int type = atom->type[i];

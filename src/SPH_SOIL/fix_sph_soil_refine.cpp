@@ -49,7 +49,7 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxlevel(1),
     strain_at_birth(nullptr), quiet_since(nullptr), family(nullptr), merge_time(0.0),
     total_merged(0), integrator(nullptr), schedule(nullptr), parameters_reported(false),
-    bytes_per_particle(0.0), node_bytes(0.0), last_split(0), last_split_step(-1), total_split(0),
+    bytes_per_particle(0.0), last_split(0), last_split_step(-1), total_split(0),
     last_unbalanced(0), run_unbalanced(0), run_split(0), run_forced(0)
 {
   if (narg < 4)
@@ -59,9 +59,7 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
   if (!atom->style_match("sph/soil"))
     SPHSoilCompat::error_all(lmp, FLERR, "Fix sph/soil/refine requires atom_style sph/soil");
 
-  nevery = utils::inumeric(FLERR, arg[3], false, lmp);
-  if (nevery < 1)
-    SPHSoilCompat::error_all(lmp, FLERR, "Illegal fix sph/soil/refine N {}: must be >= 1", nevery);
+  nevery = SPHSoilInput::integer(FLERR, lmp, "fix sph/soil/refine N", arg[3], 1);
 
   // a keyword's time > 0, or no (0)
   auto time_or_no = [&](const std::string &keyword, const char *value, const char *what) {
@@ -199,9 +197,9 @@ void FixSPHSoilRefine::setup(int)
 
 /* ----------------------------------------------------------------------
    what refinement down to maxlevel can cost: warn (once) when the group split down to maxlevel
-   would not fit in the memory of the nodes of the run. A particle's share of the pair style's
-   list follows its own h (doc/theory.rst 5.8), so the bytes per particle stay about those of
-   now at every level.
+   would not fit in the memory that the ranks and nodes of the run may have
+   (sph_soil_memory.h). A particle's share of the pair style's list follows its own h
+   (doc/theory.rst 5.8), so the bytes per particle stay about those of now at every level.
 ------------------------------------------------------------------------- */
 
 void FixSPHSoilRefine::report_capacity()
@@ -216,29 +214,47 @@ void FixSPHSoilRefine::report_capacity()
     worst_count += std::pow(daughters, MAX(0, maxlevel - avec->level[i]));
     members++;
   }
+  worst_count += (double) (atom->nlocal - members);
   double worst_all;
   bigint members_all;
   MPI_Allreduce(&worst_count, &worst_all, 1, MPI_DOUBLE, MPI_SUM, world);
   MPI_Allreduce(&members, &members_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (members_all == 0) return;
-  worst_all += (double) (atom->natoms - members_all);
-
-  // bytes per particle: the per-atom arrays of LAMMPS, of the fixes and of the pair style (its
-  // rows and its list) as they are now
-  const double per_atom =
-      (atom->memory_usage() + modify->memory_usage() + force->pair->memory_usage()) / MAX(atom->nmax, 1);
-  double per_atom_max;
-  MPI_Allreduce(&per_atom, &per_atom_max, 1, MPI_DOUBLE, MPI_MAX, world);
-  const double needed = worst_all * per_atom_max;
-  bytes_per_particle = per_atom_max;
-  const auto nodes = SPHSoilMemory::nodes(world);
-  node_bytes = nodes.bytes;
-  if (nodes.bytes > 0.0 && needed > nodes.bytes && comm->me == 0)
+  measure_bytes_per_particle();
+  const auto verdict = SPHSoilMemory::check(world, growth_bytes(worst_count));
+  if (!verdict.fits && comm->me == 0)
     error->warning(FLERR, "Fix sph/soil/refine: the group split down to level {} would hold {:.3g} "
-                          "particles, about {:.3g} GB at {:.0f} bytes each, more than the {:.3g} GB "
-                          "of the {} node(s) of this run; lower maxlevel or limit the refinement "
-                          "to a region", maxlevel, worst_all, needed / 1e9, per_atom_max,
-                   nodes.bytes / 1e9, nodes.count);
+                          "particles, about {:.3g} GB at {:.0f} bytes each, more than {}; lower "
+                          "maxlevel or limit the refinement to a region",
+                   maxlevel, worst_all, worst_all * bytes_per_particle / 1e9, bytes_per_particle,
+                   verdict.limit);
+}
+
+/* ----------------------------------------------------------------------
+   the bytes a particle costs now, per slot of the per-atom arrays (owned and ghost atoms), the
+   most of any rank: LAMMPS's accounting of the arrays of the atoms, the fixes and the pair style
+   (its rows and its list), and what that accounting misses (SPHSoilMemory::UNCOUNTED). Measured
+   at each split: the pair list per particle grows as refined particles crowd. Collective.
+------------------------------------------------------------------------- */
+
+void FixSPHSoilRefine::measure_bytes_per_particle()
+{
+  const double counted =
+      (atom->memory_usage() + modify->memory_usage() + force->pair->memory_usage()) / MAX(atom->nmax, 1);
+  const double mine = counted * (1.0 + SPHSoilMemory::UNCOUNTED);
+  MPI_Allreduce(&mine, &bytes_per_particle, 1, MPI_DOUBLE, MPI_MAX, world);
+}
+
+/* ----------------------------------------------------------------------
+   the bytes this rank would allocate to hold `owned` owned atoms: its ghosts grow with them,
+   and the slots of the per-atom arrays it has now are allocated already
+------------------------------------------------------------------------- */
+
+double FixSPHSoilRefine::growth_bytes(double owned) const
+{
+  const double growth = atom->nlocal > 0 ? owned / atom->nlocal : 1.0;
+  const double slots = growth * (atom->nlocal + atom->nghost);
+  return MAX(0.0, slots - atom->nmax) * bytes_per_particle;
 }
 
 /* ----------------------------------------------------------------------
@@ -359,16 +375,19 @@ void FixSPHSoilRefine::end_of_step()
     return;
   }
   // a split that cannot fit stops here, not in an allocation somewhere in LAMMPS
-  const double after = (double) atom->natoms +
-      (double) all_candidates * (SPHSoil::daughter_count(domain->dimension) - 1);
-  if (node_bytes > 0.0 && after * bytes_per_particle > node_bytes)
+  const int others = SPHSoil::daughter_count(domain->dimension) - 1;
+  const double after = (double) atom->natoms + (double) all_candidates * others;
+  measure_bytes_per_particle();
+  const auto verdict = SPHSoilMemory::check(
+      world, growth_bytes((double) atom->nlocal + (double) candidates * others));
+  if (!verdict.fits)
     SPHSoilCompat::error_all(
         lmp, FLERR,
         "Fix sph/soil/refine: splitting {} particles at step {} would make {:.3g} "
-        "particles, about {:.3g} GB at {:.0f} bytes each, more than the {:.3g} GB of "
-        "the node(s) of this run; lower maxlevel or limit the refinement to a region",
+        "particles, about {:.3g} GB at {:.0f} bytes each, more than {}; lower maxlevel "
+        "or limit the refinement to a region",
         all_candidates, update->ntimestep, after, after * bytes_per_particle / 1e9,
-        bytes_per_particle, node_bytes / 1e9);
+        bytes_per_particle, verdict.limit);
 
   const int nlocal_before = atom->nlocal;
   last_split = splitter->split(parents);

@@ -84,7 +84,7 @@ class FixSPHSoilRefine : public Fix {
   class FixSPHSoil *integrator;
   const SPHSoil::StepSchedule *schedule;    // fix sph/soil's time-step hierarchy
   bool parameters_reported;
-  double bytes_per_particle, node_bytes;    // at set-up: a split that would not fit stops
+  double bytes_per_particle;    // measured at each split: a split that would not fit stops
 
   bigint last_split;          // particles split at the last refinement step
   bigint last_split_step;     // that step
@@ -116,6 +116,8 @@ class FixSPHSoilRefine : public Fix {
   void reneighbour();
   void report_parameters();
   void report_capacity();
+  void measure_bytes_per_particle();
+  double growth_bytes(double owned) const;
 };
 
 }    // namespace LAMMPS_NS

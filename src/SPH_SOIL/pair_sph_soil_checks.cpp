@@ -10,6 +10,7 @@
 #include "domain.h"
 #include "error.h"
 #include "math_const.h"
+#include "modify.h"
 #include "neighbor.h"
 #include "soil_kernels.h"
 #include "soil_refine_split.h"
@@ -157,16 +158,21 @@ void PairSPHSoil::warn_spacing()
                    off.first, off.values[0], off.values[1], off.values[2], off.values[3]);
 }
 
-// A rigid body of soil particles (fix rigid and its variants) moves them as a block, while fix
-// sph/soil integrates them too or their stress never changes: structures are wall particles.
+// A rigid body of soil particles that no fix sph/soil integrates (fix rigid and its variants)
+// moves them as a block whose stress and density never change: structures are wall particles.
+// (Soil that fix sph/soil integrates too is that fix's error, or allowed by its 'others allow'.)
 void PairSPHSoil::warn_soil_in_rigid_bodies()
 {
-  const int *type = atom->type;
+  const int *type = atom->type, *mask = atom->mask;
+  int integrated = 0;    // the groups of the fixes sph/soil
+  for (int f = 0; f < modify->nfix; f++)
+    if (SPHSoilFixes::is_sph_soil_integrator(modify->fix[f])) integrated |= modify->fix[f]->groupbit;
   Fix *rigid = SPHSoilFixes::first_fix_holding(
       lmp, [](Fix *fix) { return fix->rigid_flag != 0; },
-      [&](int i) { return materials.model(type[i]) != nullptr; });
+      [&](int i) { return materials.model(type[i]) != nullptr && !(mask[i] & integrated); });
   if (rigid && comm->me == 0)
-    error->warning(FLERR, "Fix {} ({}) moves soil particles as a rigid body: a structure is made "
+    error->warning(FLERR, "Fix {} ({}) moves soil particles that no fix sph/soil integrates as a "
+                          "rigid body, whose stress and density never change: a structure is made "
                           "of wall particles (pair_coeff I I wall), soil particles are integrated "
                           "by fix sph/soil", rigid->id, rigid->style);
 }
@@ -174,8 +180,9 @@ void PairSPHSoil::warn_soil_in_rigid_bodies()
 /* ----------------------------------------------------------------------
    the pair list's size from the largest h/d: each particle lists about half of those within
    its support (2 h_ij + skin), about (pi or 4 pi / 3) / 2 ((support h + skin) / d)^D of them,
-   4 bytes each. An h far beyond the spacing that cannot fit stops here, naming h, rather than
-   in an allocation failure in the list's build.
+   4 bytes each. An h far beyond the spacing whose list cannot fit in what the ranks and nodes
+   may have (sph_soil_memory.h) stops here, naming h, rather than in an allocation failure in
+   the list's build.
 ------------------------------------------------------------------------- */
 
 void PairSPHSoil::check_list_fits()
@@ -192,14 +199,14 @@ void PairSPHSoil::check_list_fits()
   const double partners =
       0.5 * (dimension == 3 ? 4.0 / 3.0 * MY_PI * reach * reach * reach : MY_PI * reach * reach);
   const double bytes = (double) atom->natoms * partners * sizeof(int);
-  const auto nodes = SPHSoilMemory::nodes(world);
-  if (nodes.bytes > 0.0 && bytes > nodes.bytes)
+  const auto verdict = SPHSoilMemory::check(world, (double) atom->nlocal * partners * sizeof(int));
+  if (!verdict.fits)
     SPHSoilCompat::error_all(
         lmp, FLERR,
         "Pair sph/soil: h/d up to {:.3g} gives each particle about {:.3g} neighbours, "
-        "{:.3g} GB for the pair list of {} particles, more than the {:.3g} GB of the "
-        "node(s) of this run; h is usually 1.2 to 2 times the spacing d = (m/rho)^(1/{})",
-        worst_all, 2.0 * partners, bytes / 1e9, atom->natoms, nodes.bytes / 1e9, dimension);
+        "{:.3g} GB for the pair list of {} particles, more than {}; h is usually 1.2 to 2 "
+        "times the spacing d = (m/rho)^(1/{})",
+        worst_all, 2.0 * partners, bytes / 1e9, atom->natoms, verdict.limit, dimension);
 }
 
 /* ----------------------------------------------------------------------

@@ -5,6 +5,7 @@
 #include "soil_material.h"
 
 #include "soil_models.h"
+#include "soil_pore_water.h"
 #include "soil_tensor.h"
 #include "soil_water.h"
 
@@ -101,6 +102,18 @@ static bool wall_from_words(const std::string &name, const std::vector<std::stri
   return true;
 }
 
+// whether `word` is a keyword of a saturated soil's pore water: its parser is asked (its words are
+// listed in one place, soil_pore_water.cpp)
+static bool pore_water_word(const std::string &word)
+{
+  std::vector<std::string> words = {word};
+  PoreWater water;
+  bool found = false;
+  std::string error;
+  PoreWater::from_words(words, water, found, error);
+  return found;
+}
+
 bool SPHSoil::material_from_words(const std::string &name, const std::vector<std::string> &words,
                                   SoilMaterial &material, std::string &error)
 {
@@ -124,6 +137,14 @@ bool SPHSoil::material_from_words(const std::string &name, const std::vector<std
           (words.size() < 2 ? std::string() : ", got " + words[1]);
       return false;
     }
+    // a saturated soil's words on water: free water carries its own pressure, no pore water
+    for (size_t k = 2; k < words.size(); k++)
+      if (pore_water_word(words[k])) {
+        error = "material " + name + ": water takes no '" + words[k] + "' (free water is 'water " +
+            "rho_w K_w'); " + words[k] + " is a word of a saturated soil: 'soil rho0 model " +
+            "parameters porosity n permeability k'";
+        return false;
+      }
     auto water = FreeWater::from_words({words.begin() + 2, words.end()}, error);
     if (!water) {
       error = "material " + name + ": " + error;

@@ -13,9 +13,15 @@ constexpr const char *FreeWater::KEYWORD;
 std::unique_ptr<FreeWater> FreeWater::from_words(const std::vector<std::string> &words,
                                                  std::string &error)
 {
-  if (words.size() != 1) {
-    error = "water needs its bulk modulus K_w (Pa) after its density, got " +
-        std::to_string(words.size()) + " value(s)";
+  if (words.empty()) {
+    error = "water needs its bulk modulus K_w (Pa) after its density, got 0 value(s)";
+    return nullptr;
+  }
+  if (words.size() > 1) {
+    std::string given;
+    for (const auto &word : words) given += " " + word;
+    error = "water takes one value after its density, its bulk modulus K_w (Pa) ('water rho_w "
+            "K_w'), got " + std::to_string(words.size()) + ":" + given;
     return nullptr;
   }
   double modulus = 0.0;

@@ -85,6 +85,21 @@ void SPHSoilMaterials::coeff(int narg, char **arg)
         ntypes, narg - 3);
   std::vector<SoilMaterial> list;
   read_file(arg[2], list);
+  // NULL leaves a type to another pair style of pair_style hybrid (the LAMMPS convention); a
+  // line of NULLs only would set nothing at all, and LAMMPS would say at the run only that
+  // coefficients are missing
+  int named = 0;
+  for (int type = 1; type <= ntypes; type++) named += strcmp(arg[2 + type], "NULL") != 0;
+  if (named == 0) {
+    std::string names;
+    for (const auto &m : list) names += (names.empty() ? "" : ", ") + m.name;
+    SPHSoilCompat::error_all(
+        lmp, FLERR,
+        "Incorrect args for pair_coeff sph/soil: every type of 'pair_coeff * * {}' is NULL, "
+        "which gives no type a material (NULL leaves a type to another style of pair_style "
+        "hybrid); name one of the file's materials ({}) for each type of pair_style sph/soil",
+        arg[2], names);
+  }
   for (int type = 1; type <= ntypes; type++) {
     const char *name = arg[2 + type];
     if (strcmp(name, "NULL") == 0) continue;

@@ -110,8 +110,7 @@ bool SPHSoilSet::in_group(int i) const
 
 int SPHSoilSet::set_positive(const std::string &keyword, char **args, int)
 {
-  const auto values = evaluate(parse_value(keyword, args[0]));
-  check_range(keyword, values, 0.0, true, "> 0");
+  const auto values = per_atom(keyword, args[0], SPHSoilInput::above(0.0));
   double *target = keyword == "mass" ? atom->rmass
       : keyword == "h"              ? avec->smoothing_length
                                     : atom->rho;
@@ -137,8 +136,7 @@ int SPHSoilSet::set_tensor(const std::string &keyword, char **args, int)
 {
   double **target = keyword == "stress" ? avec->stress : avec->total_strain;
   for (int k = 0; k < AtomVecSPHSoil::NVOIGT; k++) {
-    const auto values = evaluate(parse_value(keyword, args[k]));
-    check_range(keyword, values, -HUGE_VAL, true, "finite");
+    const auto values = per_atom(keyword, args[k], SPHSoilInput::any());
     // plane strain: no xz, yz shear (the pair sums never produce the rates that would
     // change them, so a value set here would stay, unbalanced)
     if (domain->dimension == 2 && k >= 4) {
@@ -164,8 +162,7 @@ int SPHSoilSet::set_tensor(const std::string &keyword, char **args, int)
 
 int SPHSoilSet::set_pore_pressure(const std::string &keyword, char **args, int)
 {
-  const auto values = evaluate(parse_value(keyword, args[0]));
-  check_range(keyword, values, -HUGE_VAL, true, "finite");
+  const auto values = per_atom(keyword, args[0], SPHSoilInput::any());
   for (int i = 0; i < atom->nlocal; i++)
     if (in_group(i)) avec->pore_pressure[i] = values[i];
   return 0;
@@ -296,7 +293,21 @@ int SPHSoilSet::set_nowall(const std::string &, char **, int)
 
 /* ---------------------------------------------------------------------- */
 
-SPHSoilSet::Value SPHSoilSet::parse_value(const std::string &keyword, const char *arg)
+std::vector<double> SPHSoilSet::per_atom(const std::string &keyword, const char *arg,
+                                         const SPHSoilInput::Range &range)
+{
+  const auto values = evaluate(parse_value(keyword, arg, range));
+  check_range(keyword, values, range);
+  return values;
+}
+
+/* ----------------------------------------------------------------------
+   a word that is neither v_name nor a number names both forms and the range; a number's range
+   is checked per atom (check_range), with the variables' values
+------------------------------------------------------------------------- */
+
+SPHSoilSet::Value SPHSoilSet::parse_value(const std::string &keyword, const char *arg,
+                                          const SPHSoilInput::Range &range)
 {
   Value value;
   if (strncmp(arg, "v_", 2) == 0) {
@@ -310,6 +321,11 @@ SPHSoilSet::Value SPHSoilSet::parse_value(const std::string &keyword, const char
                                "Variable {} for sph_soil/set {} must be equal-style or atom-style",
                                value.variable, keyword);
   } else {
+    if (SPHSoilInput::ascii(arg) && !utils::is_double(arg))
+      SPHSoilCompat::error_all(lmp, FLERR,
+                               "Illegal sph_soil/set {} {}: {} or v_name (an equal- or atom-style "
+                               "variable)",
+                               keyword, arg, SPHSoilInput::finite_number_in(range));
     value.constant = SPHSoilInput::number(FLERR, lmp, "sph_soil/set " + keyword, arg);
   }
   return value;
@@ -336,16 +352,13 @@ std::vector<double> SPHSoilSet::evaluate(const Value &value)
 /* ---------------------------------------------------------------------- */
 
 void SPHSoilSet::check_range(const std::string &keyword, const std::vector<double> &values,
-                             double lo, bool lo_open, const char *allowed)
+                             const SPHSoilInput::Range &range)
 {
   const auto bad = SPHSoilOffenders::find_offenders(
-      lmp,
-      [&](int i) {
-        const double v = values[i];
-        return in_group(i) && !(std::isfinite(v) && (lo_open ? v > lo : v >= lo));
-      },
+      lmp, [&](int i) { return in_group(i) && !range.contains(values[i]); },
       [&](int i, double *out) { out[0] = values[i]; });
+  const std::string allowed = range.describe();
   if (bad)
     SPHSoilCompat::error_all(lmp, FLERR, "Illegal sph_soil/set {} value {} for atom {}: must be {}",
-                             keyword, bad.values[0], bad.first, allowed);
+                             keyword, bad.values[0], bad.first, allowed.empty() ? "finite" : allowed);
 }

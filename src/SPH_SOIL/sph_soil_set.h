@@ -15,6 +15,7 @@ CommandStyle(sph_soil/set,SPHSoilSet);
 #define LMP_SPH_SOIL_SET_H
 
 #include "command.h"
+#include "sph_soil_input.h"
 
 #include <string>
 #include <vector>
@@ -45,15 +46,19 @@ class SPHSoilSet : public Command {
   int set_wall(const std::string &keyword, char **args, int available);
   int set_nowall(const std::string &keyword, char **args, int available);
 
-  // A per-atom value given as a number or as v_name (equal- or atom-style variable).
+  // A per-atom value given as a number or as v_name (equal- or atom-style variable): per_atom()
+  // reads it, evaluates it for the owned atoms and checks those of the group against `range`
+  // (the one statement of what the keyword allows, in both of its errors)
   struct Value {
     double constant = 0.0;
     std::string variable;
   };
-  Value parse_value(const std::string &keyword, const char *arg);
+  std::vector<double> per_atom(const std::string &keyword, const char *arg,
+                               const SPHSoilInput::Range &range);
+  Value parse_value(const std::string &keyword, const char *arg, const SPHSoilInput::Range &range);
   std::vector<double> evaluate(const Value &value);
-  void check_range(const std::string &keyword, const std::vector<double> &values, double lo,
-                   bool lo_open, const char *allowed);
+  void check_range(const std::string &keyword, const std::vector<double> &values,
+                   const SPHSoilInput::Range &range);
   bool in_group(int i) const;
 };
 

@@ -7,8 +7,10 @@ environment, and how long it took.
 
 The command is `mpirun -np N [--oversubscribe] lmp -in INPUT -var NAME VALUE ... -log LOG
 -screen none EXTRA...`; np=None runs lmp itself, without mpirun (a serial run, or one under a
-wrapper such as valgrind: prefix=['valgrind', ...]). More ranks than cores get --oversubscribe
-(Open MPI refuses them otherwise). The environment is the caller's (LD_LIBRARY_PATH included,
+wrapper such as valgrind: prefix=['valgrind', ...]); outer=[...] runs the whole launch, mpirun
+included, under a command of its own (a shell that sets a process limit for mpirun and its ranks:
+outer=['bash', '-c', 'ulimit -v 3000000 && exec "$@"', 'bash']). More ranks than cores get
+--oversubscribe (Open MPI refuses them otherwise). The environment is the caller's (LD_LIBRARY_PATH included,
 for a binary copied away from its build) plus Open MPI's permission to run as root, which the
 machines of this project need, and LAMMPS_POTENTIALS pointing at the checkout's potentials/,
 where the examples' material files are (inputs run from scratch directories find them there).
@@ -67,8 +69,9 @@ class Lammps:
                                  f'bash tools/build.sh, or give one with --lmp or ${BINARY_VARIABLE}')
         return self
 
-    def command(self, infile, np=1, variables=(), log='log.lammps', screen='none', extra=(), prefix=()):
-        cmd = []
+    def command(self, infile, np=1, variables=(), log='log.lammps', screen='none', extra=(), prefix=(),
+                outer=()):
+        cmd = list(outer)
         if np is not None:
             cmd += [self.mpirun, '-np', str(np)]
             if np > (os.cpu_count() or 1):
@@ -83,12 +86,12 @@ class Lammps:
         return cmd + list(extra)
 
     def run(self, infile, directory, np=1, variables=(), log='log.lammps', screen='none', extra=(),
-            prefix=(), check=False, stdout=None, stderr=None, timeout=None):
+            prefix=(), outer=(), check=False, stdout=None, stderr=None, timeout=None):
         """Run in `directory` (made if missing), with the files the input reads beside it linked
         in (link_inputs); check=True raises CalledProcessError on failure."""
         os.makedirs(directory, exist_ok=True)
         link_inputs(infile, directory)
-        cmd = self.command(infile, np, variables, log, screen, extra, prefix)
+        cmd = self.command(infile, np, variables, log, screen, extra, prefix, outer)
         start = time.time()
         done = subprocess.run(cmd, cwd=directory, env=environment(), stdout=stdout, stderr=stderr,
                               timeout=timeout)

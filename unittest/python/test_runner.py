@@ -29,6 +29,13 @@ def test_serial_command_with_a_wrapper_and_the_screen():
     assert cmd == ['valgrind', '-q', '/opt/lmp', '-in', 'in.x', '-log', 'none', '-var', 'steps', '0']
 
 
+def test_whole_launch_under_an_outer_command():
+    outer = ['bash', '-c', 'ulimit -v 3000000 && exec "$@"', 'bash']
+    cmd = runner.Lammps('/opt/lmp').command('in.x', np=1, outer=outer)
+    assert cmd == outer + ['mpirun', '-np', '1', '/opt/lmp', '-in', 'in.x', '-log', 'log.lammps',
+                           '-screen', 'none']
+
+
 def test_environment(monkeypatch):
     monkeypatch.setenv('LD_LIBRARY_PATH', '/tmp/private_lmp')
     env = runner.environment()
