@@ -196,7 +196,16 @@ std::vector<BadInput> cases()
         "(allowed: drucker_prager, mohr_coulomb)");
   error("CoeffMohrCoulombOption", "patch", {},
         "pair_coeff 1 1 soil 2650 mohr_coulomb 0.7e6 0.3 19.8 0 0 fit exact",
-        "material of type(s) 1: mohr_coulomb: unknown option 'fit' (allowed: tension)");
+        "material of type(s) 1: mohr_coulomb: unknown option 'fit' (allowed on a soil line after the "
+        "model's parameters: tension; for a saturated soil: porosity, permeability, water_density, "
+        "water_modulus, permeability_law)");
+  // a drained wall's word on a soil: every word a soil line takes (from the models' usages and
+  // the pore water's table), and where the word belongs
+  error("CoeffDrainedSoil", "patch", {}, "pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0 drained",
+        "material of type(s) 1: drucker_prager: unknown option 'drained' (allowed on a soil line "
+        "after the model's parameters: fit, tension; for a saturated soil: porosity, permeability, "
+        "water_density, water_modulus, permeability_law); 'drained' is a word of a wall ('wall ... "
+        "drained')");
   error("CoeffFitValue", "patch", {},
         "pair_coeff 1 1 soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 fit tresca",
         "material of type(s) 1: drucker_prager fit 'tresca': must be exact, associated or nonassociated");

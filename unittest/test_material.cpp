@@ -106,6 +106,20 @@ TEST(MaterialFile, LineWithoutModelWordIsDruckerPrager)
   EXPECT_EQ(old_line.wave_speed(), a.wave_speed(2650.0));
 }
 
+// a model's usage is the one statement of its words: its parameters, then its options
+TEST(MaterialFile, ModelUsagesStateParametersAndOptions)
+{
+  EXPECT_EQ(usage_parameter_count(DruckerPrager::USAGE), 5);
+  EXPECT_EQ(usage_options(DruckerPrager::USAGE), "fit, tension");
+  EXPECT_TRUE(usage_has_option(DruckerPrager::USAGE, "fit"));
+  EXPECT_FALSE(usage_has_option(DruckerPrager::USAGE, "exact"));
+  EXPECT_EQ(usage_parameter_count(MohrCoulomb::USAGE), 5);
+  EXPECT_EQ(usage_options(MohrCoulomb::USAGE), "tension");
+  EXPECT_EQ(usage_options("K nu phi psi c"), "");
+  EXPECT_EQ(PoreWater::keyword_names(),
+            "porosity, permeability, water_density, water_modulus, permeability_law");
+}
+
 TEST(MaterialFile, RejectsBadEntriesNamingLineModelAndParameter)
 {
   rejects("a soil 2650 0.7e6 0.3 19.8 0\n",
@@ -115,7 +129,15 @@ TEST(MaterialFile, RejectsBadEntriesNamingLineModelAndParameter)
   rejects("a soil 2650 mohr_coulomb 0.7e6 0.3 19.8 25 0\n",
           "line 1: material a: mohr_coulomb dilatancy angle psi = 25 must be in [0, phi = 19.8] degrees");
   rejects("a soil 2650 mohr_coulomb 0.7e6 0.3 19.8 0 0 fit associated\n",
-          "line 1: material a: mohr_coulomb: unknown option 'fit' (allowed: tension)");
+          "line 1: material a: mohr_coulomb: unknown option 'fit' (allowed on a soil line after the "
+          "model's parameters: tension; for a saturated soil: porosity, permeability, water_density, "
+          "water_modulus, permeability_law)");
+  // a wall's word on a soil line: every word a soil line takes, and where the word belongs
+  rejects("a soil 2650 drucker_prager 0.7e6 0.3 19.8 0 0 tension 0 drained\n",
+          "line 1: material a: drucker_prager: unknown option 'drained' (allowed on a soil line after "
+          "the model's parameters: fit, tension; for a saturated soil: porosity, permeability, "
+          "water_density, water_modulus, permeability_law); 'drained' is a word of a wall ('wall ... "
+          "drained')");
   rejects("a soil 2650 mohr_coulomb 0.7e6 0.3\n",
           "line 1: material a: mohr_coulomb needs 5 parameters (K nu phi psi c), got 2");
   rejects("a soil -1 0.7e6 0.3 19.8 0 0\n", "line 1: material a: density rho0 = -1 must be finite and > 0");

@@ -60,6 +60,48 @@ std::string FrictionalParameters::check_young_modulus(double young_modulus, doub
       .check();
 }
 
+namespace {
+// the usage's words: (false, word) before the first '[', (true, option) for each '[option ...'
+std::vector<std::pair<bool, std::string>> usage_words(const std::string &usage)
+{
+  std::vector<std::pair<bool, std::string>> words;
+  std::istringstream in(usage);
+  std::string word;
+  bool options = false;
+  while (in >> word) {
+    if (word[0] == '[') {
+      options = true;
+      if (word.size() > 1) words.emplace_back(true, word.substr(1));
+    } else if (!options) {
+      words.emplace_back(false, word);
+    }
+  }
+  return words;
+}
+}    // namespace
+
+int SPHSoil::usage_parameter_count(const std::string &usage)
+{
+  int count = 0;
+  for (const auto &word : usage_words(usage)) count += !word.first;
+  return count;
+}
+
+std::string SPHSoil::usage_options(const std::string &usage)
+{
+  std::string list;
+  for (const auto &word : usage_words(usage))
+    if (word.first) list += (list.empty() ? "" : ", ") + word.second;
+  return list;
+}
+
+bool SPHSoil::usage_has_option(const std::string &usage, const std::string &option)
+{
+  for (const auto &word : usage_words(usage))
+    if (word.first && word.second == option) return true;
+  return false;
+}
+
 bool FrictionalParameters::from_words(const std::string &model, const std::vector<std::string> &words,
                                       FrictionalParameters &parameters,
                                       std::vector<std::string> &options, std::string &error)

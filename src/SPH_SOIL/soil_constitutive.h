@@ -70,6 +70,18 @@ class ConstitutiveModel {
    dilatancy angle psi for the flow rule
 ------------------------------------------------------------------------- */
 
+/* ----------------------------------------------------------------------
+   a model's usage (its USAGE, e.g. "K nu phi psi c [fit exact|associated|nonassociated]
+   [tension T]") is the one statement of its words: its parameters are the words before the
+   first '[', its options the first word within each '[...]'. Messages list them from it.
+------------------------------------------------------------------------- */
+
+int usage_parameter_count(const std::string &usage);
+// the options, comma-separated ("fit, tension"; empty if none)
+std::string usage_options(const std::string &usage);
+// whether `word` is one of the usage's options
+bool usage_has_option(const std::string &usage, const std::string &word);
+
 struct FrictionalParameters {
   double bulk_modulus = 0.0;       // K (Pa)
   double poisson_ratio = 0.0;      // nu

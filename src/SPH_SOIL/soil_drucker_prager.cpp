@@ -90,7 +90,8 @@ std::unique_ptr<ConstitutiveModel> DruckerPrager::create(const std::vector<std::
       if (!FrictionalParameters::tension_from_word(KEYWORD, value, parameters.tension, error))
         return nullptr;
     } else {
-      error = std::string(KEYWORD) + ": unknown option '" + options[k] + "' (allowed: fit, tension)";
+      error = std::string(KEYWORD) + ": unknown option '" + options[k] + "' (allowed: " +
+          usage_options(USAGE) + ")";
       return nullptr;
     }
   }

@@ -114,6 +114,41 @@ static bool pore_water_word(const std::string &word)
   return found;
 }
 
+// The first word after a model's parameters that is neither one of its options nor an option's
+// value (its usage says which are which); false if there is none (then the model's own error,
+// about a parameter or an option's value, stands)
+static bool unknown_option(const std::string &usage, const std::vector<std::string> &words,
+                           std::string &unknown)
+{
+  for (size_t k = usage_parameter_count(usage); k < words.size(); k++) {
+    if (usage_has_option(usage, words[k])) {
+      k++;    // (its value)
+      continue;
+    }
+    unknown = words[k];
+    return true;
+  }
+  return false;
+}
+
+// An unknown word on a soil line: every word the line takes after the model's parameters, the
+// model's options (from its usage) and the pore water's keywords (from their table), and where
+// a wall's word (one wall_from_words takes) belongs
+static std::string unknown_soil_word(const std::string &model, const std::string &usage,
+                                     const std::string &word)
+{
+  const std::string options = usage_options(usage);
+  std::string text = model + ": unknown option '" + word + "' (allowed on a soil line after the " +
+      "model's parameters: " + (options.empty() ? "" : options + "; ") + "for a saturated soil: " +
+      PoreWater::keyword_names() + ")";
+  SoilMaterial wall;
+  std::string wall_error;
+  if (wall_from_words("", {"wall", word}, wall, wall_error) ||
+      wall_error.find("unknown wall option") == std::string::npos)
+    text += "; '" + word + "' is a word of a wall ('wall ... " + word + "')";
+  return text;
+}
+
 bool SPHSoil::material_from_words(const std::string &name, const std::vector<std::string> &words,
                                   SoilMaterial &material, std::string &error)
 {
@@ -183,6 +218,10 @@ bool SPHSoil::material_from_words(const std::string &name, const std::vector<std
   }
   std::unique_ptr<ConstitutiveModel> model = make_model(keyword, parameters, error);
   if (!model) {
+    const ModelEntry *entry = find_model(keyword);
+    std::string unknown;
+    if (entry && unknown_option(entry->usage, parameters, unknown))
+      error = unknown_soil_word(keyword, entry->usage, unknown);
     error = "material " + name + ": " + error;
     return false;
   }

@@ -56,7 +56,8 @@ std::unique_ptr<ConstitutiveModel> MohrCoulomb::create(const std::vector<std::st
   for (size_t k = 0; k < options.size(); k += 2) {
     const std::string value = k + 1 < options.size() ? options[k + 1] : "";
     if (options[k] != "tension") {
-      error = std::string(KEYWORD) + ": unknown option '" + options[k] + "' (allowed: tension)";
+      error = std::string(KEYWORD) + ": unknown option '" + options[k] + "' (allowed: " +
+          usage_options(USAGE) + ")";
       return nullptr;
     }
     if (!FrictionalParameters::tension_from_word(KEYWORD, value, tension, error)) return nullptr;

@@ -52,6 +52,13 @@ std::string PoreWater::law_names()
   return names;
 }
 
+std::string PoreWater::keyword_names()
+{
+  std::string names;
+  for (const Keyword &keyword : KEYWORD_TABLE) names += std::string(keyword.name) + ", ";
+  return names + LAW_KEYWORD;
+}
+
 namespace {
 
 // the value of 'permeability_law' into `water`; false with the reason in `error`

@@ -70,6 +70,8 @@ struct PoreWater {
   bool variable_conductivity() const { return law != PermeabilityLaw::CONSTANT; }
   // the names of the laws, for messages
   static std::string law_names();
+  // the keywords a soil line takes for its pore water, for messages
+  static std::string keyword_names();
 
   // the keywords and their values, taken out of `words` (the rest stays, in order). `found`:
   // whether there was any. False with the reason (naming the keyword, the value and the
