@@ -401,6 +401,17 @@ std::vector<BadInput> cases()
           "Fix sph/soil walls: group floor holds no soil particle (wall particles are never "
           "integrated): this fix moves nothing");
 
+  // a geostatic state on the yield surface (phi 19.8: Drucker-Prager's default fit needs K0 >=
+  // 0.58 here): at once where the materials are known, else at the run
+  warning("GeostaticOnYieldSurface", "walls", {}, "sph_soil/set soil geostatic 0.1 2650 9.81 0.5",
+          "sph_soil/set geostatic: K0 = 0.5 puts 80 particle(s) on or outside their material's "
+          "yield surface (atom 21 of type 1");
+  warning("GeostaticOnYieldSurfaceAtTheRun", "patch",
+          {"sph_soil/set all geostatic 0.1 2650 9.81 0.5", SOIL, "pair_coeff 2 2 wall"},
+          "run 0 post no",
+          "sph_soil/set geostatic: K0 = 0.5 puts 100 particle(s) on or outside their material's "
+          "yield surface (atom 1 of type 1");
+
   // ---- warnings of the pair style at a run
   warning("NeighModifyExcludeIgnored", "walls", {"neigh_modify exclude type 2 2"}, "run 0 post no",
           "Pair sph/soil builds its own neighbour list: neigh_modify exclude has no effect on it");

@@ -254,7 +254,11 @@ void PairSPHSoil::init_style()
   // free water: the momentum sum's multiphase form (see the header)
   multiphase = pore_water->free_water();
   type_free_water.assign(atom->ntypes + 1, 0);
-  for (int t = 1; t <= atom->ntypes; t++) type_free_water[t] = materials.has(t) && materials.all()[t].water;
+  type_soil_by_water.assign(atom->ntypes + 1, 0);
+  for (int t = 1; t <= atom->ntypes; t++) {
+    type_free_water[t] = materials.has(t) && materials.all()[t].water;
+    type_soil_by_water[t] = materials.has(t) && !materials.all()[t].water && !materials.all()[t].is_wall();
+  }
   init_stress_diffusion();
   const bool full = gradient_correction == CORRECTION_FULL;
   if (gradient_correction == CORRECTION_NONE || (correction && correction->full() != full))
@@ -371,7 +375,10 @@ void PairSPHSoil::init_stress_diffusion()
   std::vector<double> coefficient(atom->ntypes + 1, 0.0);
   for (int t = 1; t <= atom->ntypes; t++) {
     const SPHSoil::SoilMaterial &m = materials.all()[t];
-    if (materials.has(t) && !m.is_wall() && !m.water) coefficient[t] = delta * m.wave_speed();
+    // (the skeleton's own wave speed: its stress is what diffuses; a saturated soil's undrained
+    // speed, several times larger, smeared Mandel's consolidation)
+    if (materials.has(t) && !m.is_wall() && !m.water)
+      coefficient[t] = delta * m.model->wave_speed(m.density);
   }
   if (delta <= 0.0) {
     diffusion.reset();

@@ -165,13 +165,21 @@ class PairSPHSoil : public Pair {
   // form makes the interface unstable; doc/theory.rst 7.5). The packed rows then hold the stress
   // itself, not stress / rho^2
   bool multiphase;
-  // In that form a pair of a soil particle and a free water particle sums their pressures
-  // only: the water bears on the grains through its pressure, and the skeleton's effective
-  // stress ends at the soil's surface (sigma' n = 0 under water), as a free surface's stress
-  // does (doc/theory.rst 7.5). Per owned and ghost atom, the pressure of its packed stress (its
-  // pore or water pressure, scaled as the packed stress is), and per type whether it is water
+  // In that form a pair of a soil particle and a free water particle sums their pressures and
+  // the skeleton's tension only: the water bears on the grains through its pressure, and the
+  // skeleton's effective stress ends at the soil's surface (sigma' n = 0 under water) as a free
+  // surface's stress does, but for its tension, which SPH cannot leave at a free surface (the
+  // tensile instability: a block whose drained sides were in effective tension came apart at
+  // once); and it adds only its divergence to the soil's velocity gradient (the water's flow
+  // past the surface does not shear the skeleton, while the volume its pressures work on is
+  // both particles'; doc/theory.rst 7.5). Per owned and ghost atom, the pressure of its packed
+  // stress (its pore or water pressure) and a soil particle's skeleton tension (the tensile
+  // part of its effective stress; 0 for others), scaled as the packed stress is; per type
+  // whether it is free water, or a soil
   std::vector<double> packed_pressure;
+  std::vector<double> skeleton_tension;
   std::vector<int> type_free_water;
+  std::vector<int> type_soil_by_water;
   // (PRESSURES: some type carries a pressure, which the total stress subtracts)
   template <int DIMENSION, bool PHASES, bool PRESSURES> void pack_atoms();
   // with a time step per level (fix sph/soil's schedule, soil_level_steps.h): per owned and

@@ -52,7 +52,10 @@ void PairSPHSoil::check_particles()
 bool PairSPHSoil::warn_geostatic_yield(int groupbit, double k0)
 {
   const int *type = atom->type, *mask = atom->mask;
-  double **stress = avec->stress;
+  // (called by sph_soil/set before init_style() has found the atom style)
+  auto *style = dynamic_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
+  if (!style) return false;
+  double **stress = style->stress;
   int missing = 0;
   for (int i = 0; i < atom->nlocal; i++)
     if ((mask[i] & groupbit) && !materials.has(type[i])) missing = 1;

@@ -165,7 +165,16 @@ template <int DIMENSION, bool PHASES, bool PRESSURES> void PairSPHSoil::pack_ato
     row[P_RHO] = rho[i];
     row[P_H] = h[i];
   }
-  if (PHASES) packed_pressure.assign(pore_pressure, pore_pressure + nall);
+  if (PHASES) {
+    packed_pressure.assign(pore_pressure, pore_pressure + nall);
+    // a soil particle's skeleton tension (the tensile part of its effective stress), 0 for
+    // water and walls
+    skeleton_tension.assign((size_t) nall * 6, 0.0);
+    const int *type = atom->type;
+    for (int i = 0; i < nall; i++)
+      if (type_soil_by_water[type[i]])
+        SPHSoil::artificial_stress<DIMENSION>(stress[i], 1.0, -1.0, &skeleton_tension[(size_t) i * 6]);
+  }
   if (nall > 0) memset(sums, 0, sizeof(double) * SUM_ROW<DIMENSION>() * nall);
 }
 
@@ -371,9 +380,13 @@ void PairSPHSoil::eval()
   if (correction) {
     correction->correct(packed, neighbours, wall_kind, walls->slips(), avec->wall_normal, kernel, D);
     if (PHASES)
-      for (int i = 0; i < atom->nlocal + atom->nghost; i++) packed_pressure[i] *= correction->factor(i);
+      for (int i = 0; i < atom->nlocal + atom->nghost; i++) {
+        packed_pressure[i] *= correction->factor(i);
+        for (int k = 0; k < 6; k++) skeleton_tension[(size_t) i * 6 + k] *= correction->factor(i);
+      }
   }
   const double *const pressure = PHASES ? packed_pressure.data() : nullptr;
+  const double *const tension = PHASES ? skeleton_tension.data() : nullptr;
   const int *const free_water = type_free_water.data();
   if (ARTIFICIAL_STRESS) pack_artificial_stress<D, Kernel, PHASES>();
   const int *const artificial_type = type_artificial_stress.data();
@@ -452,11 +465,16 @@ void PairSPHSoil::eval()
           stress_sum[k] = si[k] + sj[k];
         }
       }
-      // soil and free water: their pressures only (see the header)
-      if (PHASES && free_water[itype] != free_water[jtype]) {
+      // soil and free water: their pressures, and the skeleton's tension only (see the header)
+      const bool across = PHASES && free_water[itype] != free_water[jtype];
+      if (across) {
         const double both = -(pressure[i] + pressure[j]);
+        const double *ti = tension + (size_t) i * 6, *tj = tension + (size_t) j * 6;
         for (int a = 0; a < D; a++)
-          for (int b = a; b < D; b++) stress_sum[voigt_index(a, b)] = a == b ? both : 0.0;
+          for (int b = a; b < D; b++) {
+            const int k = voigt_index(a, b);
+            stress_sum[k] = (a == b ? both : 0.0) + ti[k] + tj[k];
+          }
       }
       if (ARTIFICIAL_STRESS && (artificial_type[itype] || artificial_type[jtype])) {
         // (R_i + R_j) (W(r) / W(spacing))^4
@@ -495,6 +513,15 @@ void PairSPHSoil::eval()
         const double force = mass_product * terms.force[a];
         force_i[a] += force;
         oj[S_FORCE + a] -= force;
+      }
+      // soil and free water: the divergence only (the skeleton deforms with the soil, and the
+      // water's flow past a soil's surface does not shear it; but the volume the pair's
+      // pressures work on is both particles', see the header)
+      if (across) {
+        double trace = 0.0;
+        for (int c = 0; c < D; c++) trace += terms.gradient[c][c];
+        for (int c = 0; c < D; c++)
+          for (int d = 0; d < D; d++) terms.gradient[c][d] = c == d ? trace / D : 0.0;
       }
       // g_i += V_j (v_j - v_i) x grad, and g_j += V_i (v_i - v_j) x (-grad): the same tensor
       for (int c = 0; c < D; c++)
@@ -535,7 +562,7 @@ void PairSPHSoil::eval()
     unpack_sums<D, CORRECTION_SCALAR>();
   // the pore water's flow and free water's density diffusion: a loop of their own, so that runs
   // of dry soil pay nothing for them; the stress diffusion likewise
-  if (pore_water->flows()) pore_water->flow(packed, neighbours, kernel, D);
+  if (pore_water->flows()) pore_water->flow(packed, neighbours, kernel, D, correction.get());
   if (diffusion) diffusion->diffuse(packed, neighbours, kernel, D);
 }
 

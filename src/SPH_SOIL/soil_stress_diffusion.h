@@ -11,8 +11,9 @@
    only the part of the difference that the two particles' gradients do not
    explain, after Antuono, Colagrossi, Marrone & Molteni (2010)'s delta-SPH:
 
-     psi_ab = sigma_a - sigma_b - (G_a + G_b) . x_ab / 2
-     dsigma_a/dt += sum_b V_b  2 delta c_ab h_ab  psi_ab  F_ab  r^2 / (r^2 + 0.01 h^2)
+     psi_ab = sigma_a - sigma_b - (G_a + G_b) . x_ab / 2, limited to between 0 and
+              sigma_a - sigma_b (unexplained_difference())
+     dsigma_a/dt += sum_b V_b  2 delta c_ab h_ab  psi_ab  F_ab  r^2 / (r^2 + eta^2)
 
    (grad W = F x_ab, F < 0: the Brookshaw Laplacian of the pore water's flow),
    with G the renormalised gradient G = g M^-1 of Randles & Libersky,
@@ -26,6 +27,8 @@
 
 #ifndef LMP_SOIL_STRESS_DIFFUSION_H
 #define LMP_SOIL_STRESS_DIFFUSION_H
+
+#include "soil_pore_water.h"
 
 namespace SPHSoil {
 
@@ -114,8 +117,19 @@ inline bool renormalised_gradient(double sums[gradient_size<DIMENSION>()],
   return valid;
 }
 
+// psi: the part of a pair's difference that its gradients do not explain, limited to between 0
+// and the difference itself, so that every pair's flux runs from the larger stress to the
+// smaller (the diffusion only ever lowers sum V sigma^2: stable whatever the gradients, also
+// where a kernel cut at a corner makes them one-sided), and a linear field's is 0
+inline double unexplained_difference(double difference, double explained)
+{
+  if (difference == 0.0) return 0.0;
+  const double share = 1.0 - explained / difference;
+  return difference * (share < 0.0 ? 0.0 : (share > 1.0 ? 1.0 : share));
+}
+
 // the pair's diffusion rate of particle a's stress, per unit partner volume (b gets minus it,
-// per unit volume of a): 2 delta c h psi_ab F r^2 / (r^2 + 0.01 h^2). `gradient_a`,
+// per unit volume of a): 2 delta c h psi_ab F r^2 / (r^2 + eta^2) (soil_pore_water.h). `gradient_a`,
 // `gradient_b`: G of each (components x D); `rate` receives diffused_components values
 template <int DIMENSION>
 inline void stress_diffusion_pair(const double *stress_a, const double *stress_b,
@@ -124,11 +138,11 @@ inline void stress_diffusion_pair(const double *stress_a, const double *stress_b
                                   double coefficient, double *rate)
 {
   constexpr int D = DIMENSION;
-  const double weight = 2.0 * coefficient * factor * r2 / (r2 + 0.01 * h * h);
+  const double weight = 2.0 * coefficient * factor * r2 / (r2 + BROOKSHAW_ETA2 * h * h);
   for (int k = 0; k < diffused_components<D>(); k++) {
     double explained = 0.0;
     for (int a = 0; a < D; a++) explained += (gradient_a[k * D + a] + gradient_b[k * D + a]) * dx[a];
-    rate[k] = weight * (stress_a[k] - stress_b[k] - 0.5 * explained);
+    rate[k] = weight * unexplained_difference(stress_a[k] - stress_b[k], 0.5 * explained);
   }
 }
 

@@ -11,6 +11,7 @@
 #include "pair.h"
 #include "soil_packed_rows.h"
 #include "soil_pore_water.h"
+#include "sph_soil_gradient_correction.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
 #include "sph_soil_offenders.h"
@@ -126,24 +127,25 @@ struct Flow {
   const double *packed;
   const NeighbourList &list;
   int dimension;
+  const SPHSoilGradientCorrection *correction;
   template <class Kernel> void operator()() const
   {
     const bool per_atom = water->variable_conductivity();
     if (dimension == 2) {
-      if (per_atom) water->flow_sums<2, Kernel, true>(packed, list);
-      else water->flow_sums<2, Kernel, false>(packed, list);
+      if (per_atom) water->flow_sums<2, Kernel, true>(packed, list, correction);
+      else water->flow_sums<2, Kernel, false>(packed, list, correction);
     } else {
-      if (per_atom) water->flow_sums<3, Kernel, true>(packed, list);
-      else water->flow_sums<3, Kernel, false>(packed, list);
+      if (per_atom) water->flow_sums<3, Kernel, true>(packed, list, correction);
+      else water->flow_sums<3, Kernel, false>(packed, list, correction);
     }
   }
 };
 }    // namespace
 
 void SPHSoilPoreWater::flow(const double *packed, const NeighbourList &list, KernelKind kernel,
-                            int dimension)
+                            int dimension, const SPHSoilGradientCorrection *correction)
 {
-  with_kernel(kernel, Flow{this, packed, list, dimension});
+  with_kernel(kernel, Flow{this, packed, list, dimension, correction});
   if (force->newton_pair) {
     exchange = FLOW;
     SPHSoilCompat::reverse_comm_pair(comm, owner);
@@ -160,7 +162,8 @@ void SPHSoilPoreWater::flow(const double *packed, const NeighbourList &list, Ker
 ------------------------------------------------------------------------- */
 
 template <int DIMENSION, class Kernel, bool PER_ATOM>
-void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list)
+void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list,
+                                 const SPHSoilGradientCorrection *correction)
 {
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton_pair = force->newton_pair;
@@ -225,6 +228,9 @@ void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list
         lambda_ij = 2.0 * lambda_j;
         rho_w = pore[type[j]].water_density;
       }
+      // (the Laplacian of a quadratic head is the kernel's moment C times its own: the
+      // correction's 1 / C, the pair's mean, keeps the flow conserved pair by pair)
+      if (correction) lambda_ij *= 0.5 * (correction->factor(i) + correction->factor(j));
       const double term = pore_flow<DIMENSION>(pressure[i], pressure[j], rho_w, gravity, g.dx, g.r2,
                                                g.hij, g.factor, lambda_ij);
       if (lambda_i > 0.0) flow[i] += pj[P_VOLUME] * term;
@@ -271,15 +277,25 @@ double SPHSoilPoreWater::largest_diffusivity(int groupbit) const
 
 /* ---------------------------------------------------------------------- */
 
+// the pore pressure, and the mass, which the exchange of water changes at every step (the atom
+// style sends it at reneighbouring only, so that dry runs do not carry it)
 int SPHSoilPoreWater::pack_forward_comm(int n, int *list, double *buf)
 {
-  for (int k = 0; k < n; k++) buf[k] = avec->pore_pressure[list[k]];
-  return n;
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    buf[m++] = avec->pore_pressure[list[k]];
+    buf[m++] = atom->rmass[list[k]];
+  }
+  return m;
 }
 
 void SPHSoilPoreWater::unpack_forward_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; k++) avec->pore_pressure[first + k] = buf[k];
+  int m = 0;
+  for (int k = first; k < first + n; k++) {
+    avec->pore_pressure[k] = buf[m++];
+    atom->rmass[k] = buf[m++];
+  }
 }
 
 int SPHSoilPoreWater::pack_reverse_comm(int n, int first, double *buf)

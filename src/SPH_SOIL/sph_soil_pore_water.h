@@ -6,9 +6,9 @@
    - per atom type, the mobility k / gamma_w of a saturated soil, a drained
      wall's mark, and the pore water (its density, its permeability law); per atom, the mobility at its
      density where k follows the porosity (permeability_law kozeny_carman);
-   - the pore pressure of the ghosts, every step before the pair loop packs the
-     total stress (the atom style sends it at reneighbouring only, so that runs
-     of dry soil do not carry it);
+   - the pore pressure and mass of the ghosts, every step before the pair loop packs the
+     total stress (the atom style sends them at reneighbouring only, so that runs
+     of dry soil do not carry them);
    - the pore water's flow, div(k / gamma_w grad(p - rho_w g . x)), summed over
      the pair list into the atom style's pore_flow, the ghosts' shares returned
      to their owners; fix sph/soil integrates the pore pressure from it.
@@ -51,15 +51,19 @@ class SPHSoilPoreWater : protected Pointers {
   // `groupbit`, at their densities; 0 without saturated soil
   double largest_diffusivity(int groupbit) const;
 
-  // the ghosts' pore pressure, from their owners (collective)
+  // the ghosts' pore pressure and mass (which the water's exchange changes), from their owners
+  // (collective)
   void share_pressures();
   // the pore water's flow of every owned atom (avec->pore_flow), from the packed rows
   // (soil_packed_rows.h: positions, h, volumes) and the pair list; collective
+  // (`correction`: the pair style's gradient correction, whose factors 1 / C normalise the
+  // Laplacian as they do the stress's divergence, or nullptr)
   void flow(const double *packed, const SPHSoil::NeighbourList &list, SPHSoil::KernelKind kernel,
-            int dimension);
+            int dimension, const class SPHSoilGradientCorrection *correction);
   // (PER_ATOM: each atom's mobility at its density, a permeability law; else its type's)
   template <int DIMENSION, class Kernel, bool PER_ATOM>
-  void flow_sums(const double *packed, const SPHSoil::NeighbourList &list);
+  void flow_sums(const double *packed, const SPHSoil::NeighbourList &list,
+                 const class SPHSoilGradientCorrection *correction);
 
   // the pore water volume per unit time that owned atom i took in from drained partners (drained
   // walls, free water) at the last evaluation, negative where it drained into them: summed over
