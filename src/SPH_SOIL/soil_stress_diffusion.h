@@ -123,9 +123,10 @@ inline bool renormalised_gradient(double sums[gradient_size<DIMENSION>()],
 // where a kernel cut at a corner makes them one-sided), and a linear field's is 0
 inline double unexplained_difference(double difference, double explained)
 {
-  if (difference == 0.0) return 0.0;
-  const double share = 1.0 - explained / difference;
-  return difference * (share < 0.0 ? 0.0 : (share > 1.0 ? 1.0 : share));
+  // difference - explained clamped to the interval between 0 and the difference (no division)
+  const double rest = difference - explained;
+  const double low = difference < 0.0 ? difference : 0.0, high = difference < 0.0 ? 0.0 : difference;
+  return rest < low ? low : (rest > high ? high : rest);
 }
 
 // the pair's diffusion rate of particle a's stress, per unit partner volume (b gets minus it,

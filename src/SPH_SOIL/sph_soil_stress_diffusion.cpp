@@ -73,26 +73,39 @@ void SPHSoilStressDiffusion::diffuse_sums(const double *packed, const NeighbourL
   double **stress = avec->stress;
   const int *partners = list.partner_data();
   const double *coefficient_of_type = coefficient.data();
-  // the pairs that diffuse: two soil particles of one diffused type
-  auto diffused = [&](int i, int j) { return type[i] == type[j] && coefficient_of_type[type[i]] > 0.0; };
 
-  // 1. M and g of every atom
+  // 1. M and g of every atom; the diffused pairs kept (partner, separation, factor, r^2, h)
+  //    for the second pass, which then needs neither the list nor the kernel again
   gradients.assign((size_t) nall * N, 0.0);
+  pairs.clear();
+  pair_start.assign(nlocal + 1, 0);
   for (int i = 0; i < nlocal; i++) {
-    if (coefficient_of_type[type[i]] <= 0.0) continue;
+    pair_start[i] = (int) pairs.size();
+    const int itype = type[i];
+    if (coefficient_of_type[itype] <= 0.0) continue;
     const double *pi = packed + (size_t) i * PACKED;
+    const double *si = stress[i];
     double *gi = &gradients[(size_t) i * N];
+    const double vi = pi[P_VOLUME];
     for (int jj = list.first(i); jj < list.end(i); jj++) {
       const int j = partners[jj];
-      if (!diffused(i, j)) continue;
+      if (type[j] != itype) continue;
       const double *pj = packed + (size_t) j * PACKED;
       PairGeometry g;
       if (!pair_geometry<D, Kernel>(pi + P_X, pi[P_H], pj, g)) continue;
+      DiffusedPair pair;
+      pair.partner = j;
+      for (int a = 0; a < D; a++) pair.dx[a] = g.dx[a];
+      pair.r2 = g.r2;
+      pair.h = g.hij;
+      pair.factor = g.factor;
+      pairs.push_back(pair);
+      const double *sj = stress[j];
       double difference[C], pair_sums[N];
-      for (int k = 0; k < C; k++) difference[k] = stress[j][k] - stress[i][k];
+      for (int k = 0; k < C; k++) difference[k] = sj[k] - si[k];
       for (int k = 0; k < N; k++) pair_sums[k] = 0.0;
       gradient_pair_sums<D>(g.dx, g.factor, difference, pair_sums);
-      const double vj = pj[P_VOLUME], vi = pi[P_VOLUME];
+      const double vj = pj[P_VOLUME];
       for (int k = 0; k < N; k++) gi[k] += vj * pair_sums[k];
       if (newton_pair || j < nlocal) {
         double *gj = &gradients[(size_t) j * N];
@@ -100,6 +113,7 @@ void SPHSoilStressDiffusion::diffuse_sums(const double *packed, const NeighbourL
       }
     }
   }
+  pair_start[nlocal] = (int) pairs.size();
   if (newton_pair) {
     exchange = SUMS;
     SPHSoilCompat::reverse_comm_pair(comm, owner);
@@ -113,24 +127,22 @@ void SPHSoilStressDiffusion::diffuse_sums(const double *packed, const NeighbourL
   SPHSoilCompat::forward_comm_pair(comm, owner);
   exchange = NONE;
 
-  // 2. the rates
+  // 2. the rates, over the kept pairs
   rates.assign((size_t) (newton_pair ? nall : nlocal) * VOIGT, 0.0);
   for (int i = 0; i < nlocal; i++) {
     if (valid[i] == 0.0) continue;
-    const double *pi = packed + (size_t) i * PACKED;
     const double *gi = &gradients[(size_t) i * N + M];
     double *ri = &rates[(size_t) i * VOIGT];
     const double coefficient_i = coefficient_of_type[type[i]];
-    for (int jj = list.first(i); jj < list.end(i); jj++) {
-      const int j = partners[jj];
-      if (valid[j] == 0.0 || !diffused(i, j)) continue;
-      const double *pj = packed + (size_t) j * PACKED;
-      PairGeometry g;
-      if (!pair_geometry<D, Kernel>(pi + P_X, pi[P_H], pj, g)) continue;
+    const double vi = packed[(size_t) i * PACKED + P_VOLUME];
+    for (int n = pair_start[i]; n < pair_start[i + 1]; n++) {
+      const DiffusedPair &pair = pairs[n];
+      const int j = pair.partner;
+      if (valid[j] == 0.0) continue;
       double rate[C];
-      stress_diffusion_pair<D>(stress[i], stress[j], gi, &gradients[(size_t) j * N + M], g.dx,
-                               g.r2, g.hij, g.factor, coefficient_i * g.hij, rate);
-      const double vj = pj[P_VOLUME], vi = pi[P_VOLUME];
+      stress_diffusion_pair<D>(stress[i], stress[j], gi, &gradients[(size_t) j * N + M], pair.dx,
+                               pair.r2, pair.h, pair.factor, coefficient_i * pair.h, rate);
+      const double vj = packed[(size_t) j * PACKED + P_VOLUME];
       for (int k = 0; k < C; k++) ri[k] += vj * rate[k];
       if (newton_pair || j < nlocal) {
         double *rj = &rates[(size_t) j * VOIGT];

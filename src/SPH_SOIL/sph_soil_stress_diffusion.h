@@ -65,6 +65,13 @@ class SPHSoilStressDiffusion : protected Pointers {
   std::vector<double> gradients;      // per atom (owned and ghost): per_atom numbers
   std::vector<double> valid;          // per atom: 1 where its gradient is trusted
   std::vector<double> rates;          // per atom (owned and ghost): VOIGT numbers
+  // the diffused pairs of the first pass, owned atom i's from pair_start[i] on
+  struct DiffusedPair {
+    int partner;
+    double dx[3], r2, h, factor;
+  };
+  std::vector<DiffusedPair> pairs;
+  std::vector<int> pair_start;
 };
 
 }    // namespace LAMMPS_NS
