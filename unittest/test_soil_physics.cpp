@@ -609,6 +609,32 @@ TEST_F(SoilPhysics, AdaptiveTimestepFollowsSmallestH)
   EXPECT_NEAR(lmp->update->dt, 0.1 * 0.012 / c, 1e-15);
 }
 
+// ... and, with viscosity_h0 above the smallest h, shrinks by the ratio of Monaghan's signal
+// speeds c (1 + 0.6 alpha h0 / h) and c (1 + 0.6 alpha) (soil_pair_terms.h): the artificial
+// viscosity of h0 on particles finer than h0 ran away within a few steps at the plain step (a
+// collapse refined to level 3 with alpha = 1 and h0 the coarse h); below h0 nothing changes
+TEST_F(SoilPhysics, AdaptiveTimestepFollowsViscosityH0)
+{
+  const double K = 0.7e6, nu = 0.3, G = 3 * K * (1 - 2 * nu) / (2 * (1 + nu));
+  const double c = std::sqrt((K + 4 * G / 3) / 2650);
+  auto step = [&](const std::string &pair_style) {
+    new_periodic_patch();
+    HIDE_OUTPUT([&] {
+      command(pair_style);
+      command("pair_coeff 1 1 soil 2650 0.7e6 0.3 19.8 0 0");
+      command("unfix integrate");
+      command("fix integrate all sph/soil cfl 0.1");
+      command("run 2 post no");
+    });
+    return lmp->update->dt;
+  };
+  EXPECT_NEAR(step("pair_style sph/soil alpha 1 beta 1 viscosity_h0 0.048"),
+              0.1 * 0.012 / c * 1.6 / (1 + 0.6 * 4), 1e-15);
+  EXPECT_NEAR(step("pair_style sph/soil alpha 0.5 beta 1 viscosity_h0 0.024"),
+              0.1 * 0.012 / c * 1.3 / (1 + 0.3 * 2), 1e-15);
+  EXPECT_NEAR(step("pair_style sph/soil alpha 1 beta 1 viscosity_h0 0.006"), 0.1 * 0.012 / c, 1e-15);
+}
+
 TEST_F(SoilPhysics, CoincidingParticlesGiveFiniteRatesAndConserveMomentum)
 {
   // two particles at one position (a second create_atoms, say): their pair has r = 0, where

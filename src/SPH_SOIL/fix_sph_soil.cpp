@@ -731,7 +731,9 @@ double FixSPHSoil::stable_timestep()
   update_schedule(min_h, max_h);
   const double c = pair->max_wave_speed();
   if (min_h >= BIG || c <= 0.0) return update->dt;
-  double dt = (cfl > 0.0 ? cfl : stable_cfl) * min_h / c;
+  // (viscosity_h0 raises the artificial viscosity of particles finer than h0: soil_pair_terms.h)
+  viscosity_factor = pair->viscosity_step_factor(min_h);
+  double dt = (cfl > 0.0 ? cfl : stable_cfl) * min_h / (c * viscosity_factor);
   // the pore pressure's diffusion (explicit: dt D / h^2 bounded, doc/theory.rst 7.3)
   // (where k follows the porosity: the largest at the particles' densities now)
   if (variable_diffusivity) {
@@ -751,6 +753,9 @@ std::string FixSPHSoil::stability_bound() const
   if (diffusion_bound)
     return fmt::format("{} * min(h)^2 / D, D = {:.6g} the pore pressure's largest diffusivity "
                        "k K_w / (gamma_w n)", DIFFUSION_NUMBER, max_diffusivity);
+  if (viscosity_factor > 1.0)
+    return fmt::format("{} * min(h) / (c_p f), f = {:.6g} for viscosity_h0 at min(h)", stable_cfl,
+                       viscosity_factor);
   return fmt::format("{} * min(h) / c_p", stable_cfl);
 }
 

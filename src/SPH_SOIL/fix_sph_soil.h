@@ -89,6 +89,7 @@ class FixSPHSoil : public Fix {
   // whether it changes with the densities (a permeability law): found at every step
   bool variable_diffusivity = false;
   static constexpr double DIFFUSION_NUMBER = 0.1;
+  double viscosity_factor = 1.0;    // pair sph/soil's viscosity_step_factor() at min(h), last
   bool diffusion_bound;    // whether the last stable_timestep() was the diffusion's
   std::string stability_bound() const;
   SPHSoil::StepSchedule schedule;    // the time step per level (stepping level), or off

@@ -47,7 +47,7 @@ const char *const STYLE = "Fix sph/soil/refine";
 
 FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), maxlevel(1),
-    strain_at_birth(nullptr), quiet_since(nullptr), family(nullptr), merge_time(0.0),
+    strain_reference(nullptr), quiet_since(nullptr), family(nullptr), merge_time(0.0),
     total_merged(0), integrator(nullptr), schedule(nullptr), parameters_reported(false),
     bytes_per_particle(0.0), last_split(0), last_split_step(-1), total_split(0),
     last_unbalanced(0), run_unbalanced(0), run_split(0), run_forced(0)
@@ -121,7 +121,7 @@ FixSPHSoilRefine::FixSPHSoilRefine(LAMMPS *lmp, int narg, char **arg) :
 FixSPHSoilRefine::~FixSPHSoilRefine()
 {
   SPHSoilFixes::keep_per_atom_end(this, atom);
-  memory->destroy(strain_at_birth);
+  memory->destroy(strain_reference);
   memory->destroy(quiet_since);
   memory->destroy(family);
   memory->destroy(ease_since);
@@ -337,12 +337,16 @@ void FixSPHSoilRefine::end_of_step()
   modify->addstep_compute(update->ntimestep + nevery);
   if (merge_time > 0.0) {
     mark_quiet();
-    // with merging, a particle that has been quiet for the hold time (one that may merge) does
-    // not split: the band between the split's and the merge's conditions (the hysteresis in
-    // value) holds in both directions. Without it, a quiet particle whose strain since its
-    // birth creeps past the threshold (a deposit at rest settles about each merge near it)
-    // splits, merges back after the hold time, and splits again.
+    // with merging, a particle that has been quiet for the hold time (one that may merge) rests:
+    // it does not split, and the criterion counts its deformation from here (the band between
+    // the split's and the merge's conditions, the hysteresis in value, holds in both
+    // directions). Without the first, a quiet particle whose strain since its birth creeps past
+    // the threshold (a deposit at rest settles about each merge near it) splits, merges back
+    // after the hold time, and splits again; without the second, it splits on that old strain
+    // as soon as a merge nearby kicks it out of its rest (doc/theory.rst 5.11).
     const double now = SPHSoilFixes::elapsed_time(update);
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && merger->held_quiet(quiet_since[i], now)) selection->rest(i);
     parents.erase(std::remove_if(parents.begin(), parents.end(),
                                  [&](int i) { return merger->held_quiet(quiet_since[i], now); }),
                   parents.end());
@@ -414,7 +418,7 @@ void FixSPHSoilRefine::born(const std::vector<int> &parents, int nlocal_before)
   // (with ease T: born with the smoothing ratio of the least defect, eased from now on; the
   // neighbour lists built after the split see the birth h, which only shrinks from there)
   auto set = [&](int j, tagint parent_tag) {
-    for (int k = 0; k < 6; k++) strain_at_birth[j][k] = avec->total_strain[j][k];
+    for (int k = 0; k < 6; k++) strain_reference[j][k] = avec->total_strain[j][k];
     quiet_since[j] = now;
     const int level = avec->level[j];
     if (level >= 1 && level <= maxlevel) family[j][level - 1] = (double) parent_tag;
@@ -518,7 +522,7 @@ void FixSPHSoilRefine::restart(char *buf)
 
 void FixSPHSoilRefine::grow_arrays(int nmax)
 {
-  memory->grow(strain_at_birth, nmax, 6, "sph/soil/refine:strain_at_birth");
+  memory->grow(strain_reference, nmax, 6, "sph/soil/refine:strain_reference");
   memory->grow(quiet_since, nmax, "sph/soil/refine:quiet_since");
   memory->grow(family, nmax, maxlevel, "sph/soil/refine:family");
   memory->grow(ease_since, nmax, "sph/soil/refine:ease_since");
@@ -527,7 +531,7 @@ void FixSPHSoilRefine::grow_arrays(int nmax)
 
 void FixSPHSoilRefine::copy_arrays(int i, int j, int /*delflag*/)
 {
-  for (int k = 0; k < 6; k++) strain_at_birth[j][k] = strain_at_birth[i][k];
+  for (int k = 0; k < 6; k++) strain_reference[j][k] = strain_reference[i][k];
   quiet_since[j] = quiet_since[i];
   for (int l = 0; l < maxlevel; l++) family[j][l] = family[i][l];
   ease_since[j] = ease_since[i];
@@ -536,7 +540,7 @@ void FixSPHSoilRefine::copy_arrays(int i, int j, int /*delflag*/)
 
 void FixSPHSoilRefine::set_arrays(int i)
 {
-  for (int k = 0; k < 6; k++) strain_at_birth[i][k] = 0.0;
+  for (int k = 0; k < 6; k++) strain_reference[i][k] = 0.0;
   quiet_since[i] = -1.0;
   for (int l = 0; l < maxlevel; l++) family[i][l] = 0.0;
   ease_since[i] = -1.0;
@@ -546,7 +550,7 @@ void FixSPHSoilRefine::set_arrays(int i)
 int FixSPHSoilRefine::pack_exchange(int i, double *buf)
 {
   int m = 0;
-  for (int k = 0; k < 6; k++) buf[m++] = strain_at_birth[i][k];
+  for (int k = 0; k < 6; k++) buf[m++] = strain_reference[i][k];
   buf[m++] = quiet_since[i];
   for (int l = 0; l < maxlevel; l++) buf[m++] = family[i][l];
   buf[m++] = ease_since[i];
@@ -557,7 +561,7 @@ int FixSPHSoilRefine::pack_exchange(int i, double *buf)
 int FixSPHSoilRefine::unpack_exchange(int nlocal, double *buf)
 {
   int m = 0;
-  for (int k = 0; k < 6; k++) strain_at_birth[nlocal][k] = buf[m++];
+  for (int k = 0; k < 6; k++) strain_reference[nlocal][k] = buf[m++];
   quiet_since[nlocal] = buf[m++];
   for (int l = 0; l < maxlevel; l++) family[nlocal][l] = buf[m++];
   ease_since[nlocal] = buf[m++];
@@ -584,7 +588,7 @@ void FixSPHSoilRefine::unpack_restart(int nlocal, int nth)
   const int values = static_cast<int>(buf[0]) - 1;
   const bool with_easing = values != 7 + maxlevel;
   const int stored_levels = values - 7 - (with_easing ? 2 : 0);
-  for (int k = 0; k < 6; k++) strain_at_birth[nlocal][k] = buf[1 + k];
+  for (int k = 0; k < 6; k++) strain_reference[nlocal][k] = buf[1 + k];
   quiet_since[nlocal] = buf[1 + 6];
   for (int l = 0; l < maxlevel; l++) family[nlocal][l] = l < stored_levels ? buf[1 + 7 + l] : 0.0;
   ease_since[nlocal] = with_easing ? buf[1 + 7 + stored_levels] : -1.0;

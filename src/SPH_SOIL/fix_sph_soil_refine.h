@@ -71,7 +71,7 @@ class FixSPHSoilRefine : public Fix {
   std::unique_ptr<class SPHSoilRefineSplitter> splitter;
   std::unique_ptr<class SPHSoilRefineBalance> balance;
   // per atom: the history of RefineHistory (sph_soil_refine_criterion.h)
-  double **strain_at_birth, *quiet_since, **family;
+  double **strain_reference, *quiet_since, **family;
   double merge_time;           // merge: siblings quiet for this time merge (0: no merging)
   // ease T: daughters are born with the smoothing ratio of the split's least stress defect
   // (birth_ratio) and their h goes linearly to alpha_r h_parent over the time T (0: no easing)
@@ -97,7 +97,7 @@ class FixSPHSoilRefine : public Fix {
   RefineHistory history() const
   {
     RefineHistory h;    // (not an aggregate in C++11, where LAMMPS 29Sep2021 compiles)
-    h.strain_at_birth = strain_at_birth;
+    h.strain_reference = strain_reference;
     h.quiet_since = quiet_since;
     h.family = family;
     return h;

@@ -16,6 +16,7 @@
 #include "neighbor.h"
 #include "soil_artificial_stress.h"
 #include "soil_packed_rows.h"
+#include "soil_pair_terms.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
 #include "sph_soil_gradient_correction.h"
@@ -432,6 +433,11 @@ void PairSPHSoil::unpack_reverse_comm(int n, int *list, double *buf)
   if (correction && correction->communicating()) return correction->unpack_reverse_comm(n, list, buf);
   if (diffusion && diffusion->communicating()) return diffusion->unpack_reverse_comm(n, list, buf);
   walls->unpack_reverse_comm(n, list, buf);
+}
+
+double PairSPHSoil::viscosity_step_factor(double h) const
+{
+  return SPHSoil::viscosity_step_factor(viscosity_alpha, viscosity_h0, h);
 }
 
 /* ----------------------------------------------------------------------

@@ -62,6 +62,8 @@ class PairSPHSoil : public Pair {
   // constitutive model of a soil type, nullptr for wall types and types without material
   const SPHSoil::ConstitutiveModel *model(int type) const { return materials.model(type); }
   double max_wave_speed() const { return materials.max_wave_speed(); }
+  // by how much viscosity_h0 shortens the stable step at smoothing length h (>= 1)
+  double viscosity_step_factor(double h) const;
   SPHSoil::KernelKind kernel_kind() const { return kernel; }
   // owned atom i's partners in the pair list (each pair is listed at one of its two atoms);
   // 0 for atoms added since the list was built

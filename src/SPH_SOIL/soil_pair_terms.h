@@ -46,6 +46,20 @@ inline double viscosity_length(double h0, double h_weight, double h)
   return h0 + h_weight * h;
 }
 
+// What viscosity_h0 costs in time step (doc/theory.rst 5.9). Monaghan's step for his viscosity
+// is C h / (c + 0.6 (alpha c + beta max mu)); with h0 a pair's alpha is alpha h0 / h, so the
+// signal speed of the alpha part grows by h0 / h on particles finer than h0. The calibrated
+// step C h / c_p (fix sph/soil cfl) is that of alpha as it is: it shrinks by the ratio of the
+// signal speeds, with and without h0, at the finest h (1 where h >= h0). (A level-3 collapse
+// with alpha = 1 and h0 the coarse h, 5.8/1.6 = 3.6 here, ran away within a few steps at
+// cfl 0.1 at the finest level and not at 0.03.) The beta part, which needs the flow's largest
+// mu, is left to the cfl.
+inline double viscosity_step_factor(double alpha, double h0, double h)
+{
+  const double ratio = h0 > h ? h0 / h : 1.0;
+  return (1.0 + 0.6 * alpha * ratio) / (1.0 + 0.6 * alpha);
+}
+
 // A pair's terms, as seen from soil particle a, in the form of the hot loop. With
 // grad W = factor x_ab, the density rate, the viscosity's approach and the velocity gradient are
 // all made of v_ab and x_ab, so everything follows from the separation, the factor, the

@@ -20,12 +20,13 @@ namespace LAMMPS_NS {
 
 // What a refinement knows of each particle's history, per atom (fix sph/soil/refine keeps it;
 // nullptr where nothing is kept, as in the sph_soil/refine command, whose criterion then
-// measures the strain since the start): the total strain at its birth (the split that made it;
-// zero for a particle never split), since when it has been quiet (< 0: it is not), and its
-// families: per level l = 1..maxlevel (column l - 1), the ID of the particle whose split made
-// it or its ancestor of that level, which daughter 0 kept (0: unknown).
+// measures the strain since the start): the total strain from which the criterion counts (at
+// the particle's birth, the split or merge that made it, zero for a particle never split; with
+// merging, at the last check at which it had been quiet for the hold time), since when it has been quiet (< 0: it is
+// not), and its families: per level l = 1..maxlevel (column l - 1), the ID of the particle whose
+// split made it or its ancestor of that level, which daughter 0 kept (0: unknown).
 struct RefineHistory {
-  double **strain_at_birth = nullptr;    // Voigt
+  double **strain_reference = nullptr;    // Voigt
   double *quiet_since = nullptr;
   double **family = nullptr;
 };
@@ -50,6 +51,9 @@ class SPHSoilRefineCriterion : protected Pointers {
   // whether owned particle i is quiet enough to merge back (fix sph/soil/refine merge T, the
   // time it must stay so): by default, when it does not want to split
   virtual bool quiet(int i, double /*hold_time*/) const { return !wants(i); }
+  // owned particle i has been quiet for the hold time of a refinement that merges (it rests):
+  // what it did so far is history, and a criterion that counts its deformation counts from here
+  virtual void rest(int /*i*/) {}
   // what it selects, for the log: "strain measure > 0.05"
   virtual std::string describe() const = 0;
 };

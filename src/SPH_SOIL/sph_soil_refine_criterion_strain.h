@@ -4,7 +4,8 @@
    `threshold` (doc/theory.rst section 5.1), of the strain since the particle's
    birth (`since split`, the default: a daughter is judged on what it has done
    itself, so that it does not split again at the next check on its parent's
-   strain) or of the whole accumulated strain (`since start`, the paper's).
+   strain), with merging since it was last quiet (5.11), or of the whole
+   accumulated strain (`since start`, the paper's).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_SPH_SOIL_REFINE_CRITERION_STRAIN_H
@@ -45,13 +46,13 @@ class SPHSoilRefineCriterionStrain : public SPHSoilRefineCriterion {
   void prepare(const RefineHistory &history) override
   {
     avec = static_cast<AtomVecSPHSoil *>(atom->style_match("sph/soil"));
-    strain_at_birth = since_split ? history.strain_at_birth : nullptr;
+    strain_reference = since_split ? history.strain_reference : nullptr;
   }
   bool wants(int i) const override
   {
     double strain[6];
     for (int k = 0; k < 6; k++)
-      strain[k] = avec->total_strain[i][k] - (strain_at_birth ? strain_at_birth[i][k] : 0.0);
+      strain[k] = avec->total_strain[i][k] - (strain_reference ? strain_reference[i][k] : 0.0);
     return SPHSoil::strain_measure(strain) > threshold;
   }
   // quiet: at its present strain rate it would take more than twice the hold time to reach
@@ -61,6 +62,11 @@ class SPHSoilRefineCriterionStrain : public SPHSoilRefineCriterion {
     double strain[6];
     for (int k = 0; k < 6; k++) strain[k] = avec->strain_rate[i][k] * hold_time;
     return SPHSoil::strain_measure(strain) < 0.25 * threshold;
+  }
+  void rest(int i) override
+  {
+    if (strain_reference)
+      for (int k = 0; k < 6; k++) strain_reference[i][k] = avec->total_strain[i][k];
   }
   std::string describe() const override
   {
@@ -72,7 +78,7 @@ class SPHSoilRefineCriterionStrain : public SPHSoilRefineCriterion {
   double threshold;
   bool since_split;
   AtomVecSPHSoil *avec;
-  double **strain_at_birth = nullptr;
+  double **strain_reference = nullptr;
 };
 
 }    // namespace LAMMPS_NS

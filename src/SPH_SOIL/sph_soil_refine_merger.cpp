@@ -351,7 +351,7 @@ bool SPHSoilRefineMerger::merge_into(int i, const std::vector<int> &members, dou
   // average of its members' strains at birth would hand it the strain they gathered since
   // their split, above the threshold wherever they sat at maxlevel: it would split again at
   // the next check, and merge again, and so on.)
-  for (int k = 0; k < 6; k++) state.strain_at_birth[i][k] = avec->total_strain[i][k];
+  for (int k = 0; k < 6; k++) state.strain_reference[i][k] = avec->total_strain[i][k];
   for (int k = 0; k < 6; k++) avec->stress_rate[i][k] = values[m++];
   for (int k = 0; k < 6; k++) avec->strain_rate[i][k] = values[m++];
   for (int k = 0; k < 3; k++) avec->spin[i][k] = values[m++];

@@ -47,6 +47,9 @@ class SPHSoilRefineSelection : protected Pointers {
   {
     return !(i < (int) parent_in_buffer.size() && parent_in_buffer[i]) && criterion->quiet(i, hold_time);
   }
+  // owned particle i has been quiet for the hold time (after parents()): it rests, and a
+  // criterion that counts its deformation counts from here (SPHSoilRefineCriterion::rest())
+  void rest(int i) { criterion->rest(i); }
   std::string describe() const;
 
  private:
