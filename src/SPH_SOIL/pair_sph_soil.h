@@ -152,11 +152,14 @@ class PairSPHSoil : public Pair {
 
   // the loop (pair_sph_soil_loop.cpp). Per owned and ghost atom: the packed rows of its inputs
   // (soil_packed_rows.h), and its sums: force, density rate, the velocity gradient's sum
-  // (sum V t^cd, row by row), split into strain rate and spin when unpacked; a row holds
-  // SUM_ROW doubles (8 in 2D, 16 in 3D: whole cache lines), SUMS at most
+  // (sum V t^cd, row by row), split into strain rate and spin when unpacked, and with free
+  // water the divergence of the soil-water pairs (sum V t^cc over them), which goes to the pore
+  // water only (doc/theory.rst 7.5); a row holds SUM_ROW doubles (8 in 2D, 16 in 3D: whole
+  // cache lines), SUMS at most
   enum { S_FORCE = 0, SUMS = 16 };
   template <int DIMENSION> static constexpr int S_DRHO() { return DIMENSION; }
   template <int DIMENSION> static constexpr int S_GRADIENT() { return DIMENSION + 1; }
+  template <int DIMENSION> static constexpr int S_ACROSS() { return DIMENSION + 1 + DIMENSION * DIMENSION; }
   template <int DIMENSION> static constexpr int SUM_ROW() { return DIMENSION == 2 ? 8 : 16; }
   int nmax_packed;
   double *packed;
@@ -172,9 +175,11 @@ class PairSPHSoil : public Pair {
   // skeleton's effective stress ends at the soil's surface (sigma' n = 0 under water) as a free
   // surface's stress does, but for its tension, which SPH cannot leave at a free surface (the
   // tensile instability: a block whose drained sides were in effective tension came apart at
-  // once); and it adds only its divergence to the soil's velocity gradient (the water's flow
-  // past the surface does not shear the skeleton, while the volume its pressures work on is
-  // both particles'; doc/theory.rst 7.5). Per owned and ghost atom, the pressure of its packed
+  // once); and its velocity terms do not enter the skeleton's strain rate (what the effective
+  // stress does not act across, it must not deform with: a dense column's submerged face ran
+  // away when it did), only their divergence enters the pore water's balance of volume (the
+  // volume the pair's pressures work on is both particles'; doc/theory.rst 7.5). Per owned and
+  // ghost atom, the pressure of its packed
   // stress (its pore or water pressure) and a soil particle's skeleton tension (the tensile
   // part of its effective stress; 0 for others), scaled as the packed stress is; per type
   // whether it is free water, or a soil
@@ -197,7 +202,7 @@ class PairSPHSoil : public Pair {
   void pack_step_periods();
   // (CORRECTION: none, the gradient correction's factors, or those and its velocity gradient
   // tensors; compiled apart, so that runs without it keep their cost)
-  template <int DIMENSION, int CORRECTION> void unpack_sums();
+  template <int DIMENSION, int CORRECTION, bool PHASES> void unpack_sums();
   // per owned and ghost atom: R (Voigt, the units of stress / rho^2) and 1 / w(d / h), w the
   // kernel's shape and d = (m / rho)^(1/D) the spacing: the pair's weight is
   // (W(r) / W(d))^4 = (w(r / h_ij) / w(d / h))^4, exact for two particles of the same d / h

@@ -225,15 +225,16 @@ template <int DIMENSION, class Kernel, bool PHASES> void PairSPHSoil::pack_artif
    communication then brings the ghosts' shares to their owners)
 ------------------------------------------------------------------------- */
 
-template <int DIMENSION, int CORRECTION> void PairSPHSoil::unpack_sums()
+template <int DIMENSION, int CORRECTION, bool PHASES> void PairSPHSoil::unpack_sums()
 {
+  static_assert(S_ACROSS<DIMENSION>() < SUM_ROW<DIMENSION>(), "a sum row holds its columns");
   constexpr bool CORRECTED = CORRECTION != CORRECTION_NONE;
   constexpr bool FULL = CORRECTION == CORRECTION_FULL;
   // without Newton's third law for ghost pairs, ghost rows hold shares that their owners
   // compute themselves
   const int n = force->newton_pair ? atom->nlocal + atom->nghost : atom->nlocal;
   double **f = atom->f, **strain_rate = avec->strain_rate, **spin = avec->spin;
-  double *drho = atom->drho;
+  double *drho = atom->drho, *pore_flow = avec->pore_flow;
   const double *rho = atom->rho;
   const bool volume_form = continuity_volume;
   constexpr int D = DIMENSION;
@@ -261,6 +262,10 @@ template <int DIMENSION, int CORRECTION> void PairSPHSoil::unpack_sums()
     }
     // strain rate (Voigt) and spin (xy xz yz): the symmetric and antisymmetric parts
     const double gradient_scale = FULL ? 1.0 : scale;    // (full: L holds it)
+    // the soil-water pairs' divergence: water that crossed into (or out of) the soil's pores,
+    // in the pore water's balance of volume (the pore water's flow adds its own later; with
+    // the full correction, whose factor the ghosts do not hold, as summed)
+    if (PHASES) pore_flow[i] = -gradient_scale * sum[S_ACROSS<D>()];
     for (int a = 0; a < D; a++) strain_rate[i][a] += gradient_scale * g[a * D + a];
     for (int a = 0; a < D; a++)
       for (int b = a + 1; b < D; b++) {
@@ -437,7 +442,7 @@ void PairSPHSoil::eval()
     }
 
     // i's shares, accumulated here and stored once after the j loop
-    double drho_i = 0.0, force_i[D], gradient_i[D][D];
+    double drho_i = 0.0, across_i = 0.0, force_i[D], gradient_i[D][D];
     for (int a = 0; a < D; a++) {
       force_i[a] = 0.0;
       for (int b = 0; b < D; b++) gradient_i[a][b] = 0.0;
@@ -514,14 +519,16 @@ void PairSPHSoil::eval()
         force_i[a] += force;
         oj[S_FORCE + a] -= force;
       }
-      // soil and free water: the divergence only (the skeleton deforms with the soil, and the
-      // water's flow past a soil's surface does not shear it; but the volume the pair's
-      // pressures work on is both particles', see the header)
+      // soil and free water: their divergence goes to the volumes the pair's pressures work on
+      // (the pore water's, the free water's), not to the skeleton's strain rate (its effective
+      // stress does not act across the pair, so it must not deform with it; see the header)
       if (across) {
         double trace = 0.0;
         for (int c = 0; c < D; c++) trace += terms.gradient[c][c];
         for (int c = 0; c < D; c++)
-          for (int d = 0; d < D; d++) terms.gradient[c][d] = c == d ? trace / D : 0.0;
+          for (int d = 0; d < D; d++) terms.gradient[c][d] = 0.0;
+        across_i += volume_j * trace;
+        oj[S_ACROSS<D>()] += volume_i * trace;
       }
       // g_i += V_j (v_j - v_i) x grad, and g_j += V_i (v_i - v_j) x (-grad): the same tensor
       for (int c = 0; c < D; c++)
@@ -532,6 +539,7 @@ void PairSPHSoil::eval()
     }
 
     double *oi = out + (size_t) i * ROW;
+    if (PHASES) oi[S_ACROSS<D>()] += across_i;
     oi[DRHO] += drho_i;
     for (int a = 0; a < D; a++) oi[S_FORCE + a] += force_i[a];
     for (int c = 0; c < D; c++)
@@ -554,12 +562,15 @@ void PairSPHSoil::eval()
     }
   }
 
+  // (the pore water's flow is summed into what the soil-water pairs leave in pore_flow)
+  if (pore_water->pressures() && !PHASES)
+    memset(avec->pore_flow, 0, sizeof(double) * (atom->nlocal + atom->nghost));
   if (!correction)
-    unpack_sums<D, CORRECTION_NONE>();
+    unpack_sums<D, CORRECTION_NONE, PHASES>();
   else if (correction->full())
-    unpack_sums<D, CORRECTION_FULL>();
+    unpack_sums<D, CORRECTION_FULL, PHASES>();
   else
-    unpack_sums<D, CORRECTION_SCALAR>();
+    unpack_sums<D, CORRECTION_SCALAR, PHASES>();
   // the pore water's flow and free water's density diffusion: a loop of their own, so that runs
   // of dry soil pay nothing for them; the stress diffusion likewise
   if (pore_water->flows()) pore_water->flow(packed, neighbours, kernel, D, correction.get());
