@@ -264,7 +264,7 @@ TEST_F(Saturated, KozenyCarmanScalesTheSeepageWithThePorosity)
 // little soft, doc/validation.rst); since the soil-water pairs' velocity terms reach the pore
 // water only (doc/theory.rst 7.5) the drained sides' skeleton no longer deforms with the bath's
 // water and the early drainage at a/2 is slower: 0.959 p0 (within 0.06), while at T = 0.5 the
-// pore pressures meet Mandel's (0.527 against 0.526 at the centre). Before the artificial stress
+// pore pressures meet Mandel's (0.530 against 0.526 at the centre). Before the artificial stress
 // took a saturated soil's total stress, the centre never rose above 1.00 p0.
 TEST_F(Saturated, MandelsBlockShowsTheMandelCryerEffect)
 {
