@@ -153,6 +153,20 @@ class Refinement : public SoilTest {
     return lmp->modify->fix[lmp->modify->find_fix(id)]->compute_vector(n);
   }
 
+  // from a cleared LAMMPS: the 2D 6 x 6 patch at rest with `state` (sph_soil/set keywords),
+  // integrated with cfl 0.1 and refined by `refine` (the fix's arguments after its ID)
+  void patch_at_rest(const std::string &state, const std::string &refine)
+  {
+    HIDE_OUTPUT([&] { command("clear"); });
+    patch(2, 6, false);
+    HIDE_OUTPUT([&] {
+      command("velocity all set 0 0 0 units box");
+      command("sph_soil/set all " + state);
+      command("fix integrate all sph/soil cfl 0.1");
+      command("fix refine all " + refine);
+    });
+  }
+
   // velocities on the 6 x 6 patch whose normal strain rates (of 6 m/s over a wavelength of 6
   // cm, 628/s at most) exceed 300/s at every site (the sites of one row or column sit at
   // phases 30 + 60 k degrees; y's shifted by 30 degrees): no particle is quiet for a hold time
@@ -511,15 +525,8 @@ TEST_F(Refinement, FixSplitsStrainedParticlesInItsRegionUpToMaxlevel)
 TEST_F(Refinement, DaughtersDoNotSplitAgainOnTheirParentsStrain)
 {
   auto levels = [&](const std::string &since) {
-    HIDE_OUTPUT([&] { command("clear"); });
-    patch(2, 6, false);
-    HIDE_OUTPUT([&] {
-      command("velocity all set 0 0 0 units box");
-      command("sph_soil/set all stress 0 0 0 0 0 0 strain 0.3 0 0 0 0 0");
-      command("fix integrate all sph/soil cfl 0.1");
-      command("fix refine all sph/soil/refine 1 maxlevel 3 since " + since);
-      command("run 4 post no");
-    });
+    patch_at_rest("stress 0 0 0 0 0 0 strain 0.3 0 0 0 0 0", "sph/soil/refine 1 maxlevel 3 since " + since);
+    HIDE_OUTPUT([&] { command("run 4 post no"); });
     return std::vector<double>{fix_vector("refine", 2), fix_vector("refine", 3), fix_vector("refine", 4),
                                fix_vector("refine", 5)};
   };
@@ -576,13 +583,8 @@ TEST_F(Refinement, MergedParticlesAreJudgedFromTheMerge)
 TEST_F(Refinement, QuietParticlesDoNotSplitWhileMerging)
 {
   auto splits_at_rest = [&](const std::string &merging) {
-    HIDE_OUTPUT([&] { command("clear"); });
-    patch(2, 6, false);
+    patch_at_rest("stress 0 0 0 0 0 0", "sph/soil/refine 1 maxlevel 1 " + merging);
     HIDE_OUTPUT([&] {
-      command("velocity all set 0 0 0 units box");
-      command("sph_soil/set all stress 0 0 0 0 0 0");
-      command("fix integrate all sph/soil cfl 0.1");
-      command("fix refine all sph/soil/refine 1 maxlevel 1 " + merging);
       command("run 20 post no");                              // quiet for more than 1e-5 s
       command("sph_soil/set all strain 0.3 0 0 0 0 0");       // above the threshold
       command("run 2 post no");
@@ -603,13 +605,8 @@ TEST_F(Refinement, QuietParticlesDoNotSplitWhileMerging)
 TEST_F(Refinement, ParticlesMovingAgainAreJudgedOnTheStrainSinceTheyWereQuiet)
 {
   auto splits_after_kick = [&](const std::string &since, const std::string &then) {
-    HIDE_OUTPUT([&] { command("clear"); });
-    patch(2, 6, false);
+    patch_at_rest("stress 0 0 0 0 0 0", "sph/soil/refine 1 maxlevel 1 merge 1e-3 since " + since);
     HIDE_OUTPUT([&] {
-      command("velocity all set 0 0 0 units box");
-      command("sph_soil/set all stress 0 0 0 0 0 0");
-      command("fix integrate all sph/soil cfl 0.1");
-      command("fix refine all sph/soil/refine 1 maxlevel 1 merge 1e-3 since " + since);
       command("run 40 post no");                              // quiet for more than 1e-3 s
       command("sph_soil/set all strain 0.3 0 0 0 0 0");       // crept past the threshold
       command("run 2 post no");

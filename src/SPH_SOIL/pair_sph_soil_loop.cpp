@@ -265,7 +265,7 @@ template <int DIMENSION, int CORRECTION, bool PHASES> void PairSPHSoil::unpack_s
     // the soil-water pairs' divergence: water that crossed into (or out of) the soil's pores,
     // in the pore water's balance of volume (the pore water's flow adds its own later; with
     // the full correction, whose factor the ghosts do not hold, as summed)
-    if (PHASES) pore_flow[i] = -gradient_scale * sum[S_ACROSS<D>()];
+    if (PHASES) pore_flow[i] -= gradient_scale * sum[S_ACROSS<D>()];
     for (int a = 0; a < D; a++) strain_rate[i][a] += gradient_scale * g[a * D + a];
     for (int a = 0; a < D; a++)
       for (int b = a + 1; b < D; b++) {
@@ -562,9 +562,9 @@ void PairSPHSoil::eval()
     }
   }
 
-  // (the pore water's flow is summed into what the soil-water pairs leave in pore_flow)
-  if (pore_water->pressures() && !PHASES)
-    memset(avec->pore_flow, 0, sizeof(double) * (atom->nlocal + atom->nghost));
+  // pore_flow, the pore water's balance of volume, is summed here from zero: the soil-water
+  // pairs' divergence when unpacked, then the pore water's own flow (SPHSoilPoreWater::flow())
+  if (pore_water->pressures()) memset(avec->pore_flow, 0, sizeof(double) * (atom->nlocal + atom->nghost));
   if (!correction)
     unpack_sums<D, CORRECTION_NONE, PHASES>();
   else if (correction->full())

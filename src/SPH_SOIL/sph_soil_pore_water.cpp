@@ -171,8 +171,8 @@ void SPHSoilPoreWater::flow_sums(const double *packed, const NeighbourList &list
   const double *pressure = avec->pore_pressure;
   double *flow = avec->pore_flow;
   double *drho = atom->drho;
-  // (flow holds what the soil-water pairs of the pair style's loop put there: its own sum starts
-  // from it, PairSPHSoil::unpack_sums())
+  // (flow, zeroed by the pair style before its loop, holds the soil-water pairs' divergence:
+  // this sum adds to it, PairSPHSoil::eval())
   inflow.assign(nlocal, 0.0);
   moved.assign((size_t) (newton_pair ? nall : nlocal) * MOVED, 0.0);
   // each atom's mobility: its type's, or (PER_ATOM) at its density where k follows the porosity

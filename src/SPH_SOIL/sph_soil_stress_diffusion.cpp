@@ -22,7 +22,7 @@ constexpr int SPHSoilStressDiffusion::COMM_SIZE;
 constexpr double SPHSoilStressDiffusion::SMALLEST_DETERMINANT;
 
 SPHSoilStressDiffusion::SPHSoilStressDiffusion(LAMMPS *lmp, Pair *owner) :
-    Pointers(lmp), owner(owner), avec(nullptr), exchange(NONE), per_atom(0), moment(0), components(0)
+    Pointers(lmp), owner(owner), avec(nullptr), exchange(NONE), gradient_width(0), moment(0), components(0)
 {
   static_assert(gradient_size<3>() <= COMM_SIZE, "the exchanges' size");
 }
@@ -52,7 +52,7 @@ struct Diffuse {
 void SPHSoilStressDiffusion::diffuse(const double *packed, const NeighbourList &list,
                                      KernelKind kernel, int dimension)
 {
-  per_atom = dimension == 2 ? gradient_size<2>() : gradient_size<3>();
+  gradient_width = dimension == 2 ? gradient_size<2>() : gradient_size<3>();
   moment = dimension == 2 ? moment_size<2>() : moment_size<3>();
   components = dimension == 2 ? diffused_components<2>() : diffused_components<3>();
   with_kernel(kernel, Diffuse{this, packed, list, dimension});
@@ -164,10 +164,10 @@ void SPHSoilStressDiffusion::diffuse_sums(const double *packed, const NeighbourL
 
 int SPHSoilStressDiffusion::pack_forward_comm(int n, int *list, double *buf)
 {
-  const int m = per_atom - moment;
+  const int m = gradient_width - moment;
   int k = 0;
   for (int i = 0; i < n; i++) {
-    const double *g = &gradients[(size_t) list[i] * per_atom + moment];
+    const double *g = &gradients[(size_t) list[i] * gradient_width + moment];
     for (int c = 0; c < m; c++) buf[k++] = g[c];
     buf[k++] = valid[list[i]];
   }
@@ -176,10 +176,10 @@ int SPHSoilStressDiffusion::pack_forward_comm(int n, int *list, double *buf)
 
 void SPHSoilStressDiffusion::unpack_forward_comm(int n, int first, double *buf)
 {
-  const int m = per_atom - moment;
+  const int m = gradient_width - moment;
   int k = 0;
   for (int i = first; i < first + n; i++) {
-    double *g = &gradients[(size_t) i * per_atom + moment];
+    double *g = &gradients[(size_t) i * gradient_width + moment];
     for (int c = 0; c < m; c++) g[c] = buf[k++];
     valid[i] = buf[k++];
   }
@@ -188,10 +188,10 @@ void SPHSoilStressDiffusion::unpack_forward_comm(int n, int first, double *buf)
 int SPHSoilStressDiffusion::pack_reverse_comm(int n, int first, double *buf)
 {
   const bool sums = exchange == SUMS;
-  const int width = sums ? per_atom : components;
+  const int width = sums ? gradient_width : components;
   int k = 0;
   for (int i = first; i < first + n; i++) {
-    const double *from = sums ? &gradients[(size_t) i * per_atom] : &rates[(size_t) i * VOIGT];
+    const double *from = sums ? &gradients[(size_t) i * gradient_width] : &rates[(size_t) i * VOIGT];
     for (int c = 0; c < width; c++) buf[k++] = from[c];
   }
   return k;
@@ -200,10 +200,10 @@ int SPHSoilStressDiffusion::pack_reverse_comm(int n, int first, double *buf)
 void SPHSoilStressDiffusion::unpack_reverse_comm(int n, int *list, double *buf)
 {
   const bool sums = exchange == SUMS;
-  const int width = sums ? per_atom : components;
+  const int width = sums ? gradient_width : components;
   int k = 0;
   for (int i = 0; i < n; i++) {
-    double *to = sums ? &gradients[(size_t) list[i] * per_atom] : &rates[(size_t) list[i] * VOIGT];
+    double *to = sums ? &gradients[(size_t) list[i] * gradient_width] : &rates[(size_t) list[i] * VOIGT];
     for (int c = 0; c < width; c++) to[c] += buf[k++];
   }
 }

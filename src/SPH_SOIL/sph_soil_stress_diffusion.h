@@ -59,10 +59,10 @@ class SPHSoilStressDiffusion : protected Pointers {
   class AtomVecSPHSoil *avec;
   std::vector<double> coefficient;    // per type
   enum Exchange { NONE, SUMS, GRADIENTS, RATES } exchange;
-  int per_atom;                       // the sums' (gradient_size) for the run's dimension
+  int gradient_width;                 // the sums' (gradient_size) for the run's dimension
   int moment;                         // where the gradient starts in them (moment_size)
   int components;                     // the stress components diffused
-  std::vector<double> gradients;      // per atom (owned and ghost): per_atom numbers
+  std::vector<double> gradients;      // per atom (owned and ghost): gradient_width numbers
   std::vector<double> valid;          // per atom: 1 where its gradient is trusted
   std::vector<double> rates;          // per atom (owned and ghost): VOIGT numbers
   // the diffused pairs of the first pass, owned atom i's from pair_start[i] on
