@@ -48,6 +48,55 @@ TEST(PairTerm, MirroredStressOfAFreeSlipWallHasNoShearTraction)
 // 3). Sticking, the trial force cancels the tangential force and the slip of the half step;
 // sliding, it is mu N against the trial's direction; mu = 0 gives nothing; a moving wall's
 // velocity is the reference of the slip.
+// soil lifting off a drained wall (doc/theory.rst 7.3): the gap is 0 where a lattice touches the
+// plane, the contact fades over CONTACT_RANGE of the spacing, and across the gap the image holds
+// the wall's water
+TEST(DrainedWall, GapIsMeasuredFromTheLatticePositionAndTheContactFadesWithIt)
+{
+  const double spacing = 0.004, volume = spacing * spacing;
+  EXPECT_NEAR(gap_to_wall<2>(0.5 * spacing, volume), 0.0, 1e-15);
+  EXPECT_NEAR(gap_to_wall<2>(0.6 * spacing, volume), 0.1 * spacing, 1e-15);
+  EXPECT_NEAR(gap_to_wall<3>(0.7 * spacing, spacing * spacing * spacing), 0.2 * spacing, 1e-15);
+  EXPECT_EQ(contact_share<2>(-0.01 * spacing, volume), 1.0);
+  EXPECT_EQ(contact_share<2>(0.0, volume), 1.0);
+  EXPECT_NEAR(contact_share<2>(0.5 * CONTACT_RANGE * spacing, volume), 0.5, 1e-12);
+  EXPECT_EQ(contact_share<2>(CONTACT_RANGE * spacing, volume), 0.0);
+  EXPECT_EQ(contact_share<2>(spacing, volume), 0.0);
+}
+
+TEST(DrainedWall, ImageAcrossAGapHoldsItsShareOfTheSoilAndTheWallsWater)
+{
+  // a soil particle over a no-slip floor (normal +y), effective stress sigma' and pore pressure
+  // p_s; its packed total stress sigma' - p_s I, the wall's water at p_w
+  const double n[3] = {0.0, 1.0, 0.0};
+  const double effective[6] = {-300.0, -700.0, -300.0, 40.0, 0.0, 0.0};
+  const double p_s = 2000.0, p_w = 2100.0;
+  double total[6];
+  for (int k = 0; k < 6; k++) total[k] = effective[k] - (k < 3 ? p_s : 0.0);
+  const double separation[3] = {0.001, 0.002, 0.0};
+  const double velocity[3] = {0.01, 0.03, 0.0};    // v_s - v_image: sliding and separating
+  for (double share : {1.0, 0.25, 0.0}) {
+    MirrorImage image;
+    for (int k = 0; k < 6; k++) image.stress_sum[k] = 0.0;
+    for (int k : {0, 1, 3}) image.stress_sum[k] = 2.0 * total[k];    // mirror_image's, no slip
+    for (int a = 0; a < 3; a++) image.dv[a] = velocity[a];
+    image.approach = velocity[0] * separation[0] + velocity[1] * separation[1];
+    drained_image<2>(total, p_w, share, n, separation, image);
+    // the image: share of the soil's total stress (in contact, the mirror's), the rest the
+    // wall's water, -p_w I
+    for (int k : {0, 1, 3}) {
+      const double image_stress = share * total[k] - (1.0 - share) * (k < 2 ? p_w : 0.0);
+      EXPECT_NEAR(image.stress_sum[k], total[k] + image_stress, 1e-9) << "share " << share;
+    }
+    // (2D: the out-of-plane components are not the pair's)
+    EXPECT_EQ(image.stress_sum[2], 0.0);
+    // sliding kept, the separation's share with the contact
+    EXPECT_NEAR(image.dv[0], velocity[0], 1e-15);
+    EXPECT_NEAR(image.dv[1], share * velocity[1], 1e-15);
+    EXPECT_NEAR(image.approach, image.dv[0] * separation[0] + image.dv[1] * separation[1], 1e-15);
+  }
+}
+
 TEST(WallFriction, TrialForceStopsTheSlipAndCoulombBoundsIt)
 {
   const double normal[3] = {0.0, 1.0, 0.0}, at_rest[3] = {0.0, 0.0, 0.0};

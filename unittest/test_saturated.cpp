@@ -4,6 +4,8 @@
 // momentum of soil and water together: test_soil_physics.)
 #include "sph_soil_testing.h"
 
+#include <mpi.h>
+
 #include "soil_pore_water.h"
 
 #include "input.h"
@@ -213,22 +215,68 @@ TEST_F(Saturated, WallsOfAnyMassHoldFreeWaterAlike)
 // over 1 mm/s (measured 8 mm/s; at 1.1, 2.6 mm/s).
 TEST_F(Saturated, UpwardSeepageLiftsTheLayerAboveTheCriticalGradient)
 {
-  for (const std::string gradient : {"0.8", "1.2"}) {
-    HIDE_OUTPUT([&] {
-      command("clear");
-      command("units si");
-      command("variable gradients index " + gradient);
-      command("include " + EXAMPLES + "/saturated/in.quick");
-    });
-    const double speed = equal("mean_speed");
-    if (gradient == "0.8") {
-      EXPECT_LT(std::fabs(speed), 1e-4) << "i = 0.8";
-      EXPECT_NEAR(equal("base_pore_pressure"), equal("p_theory"), 0.01 * equal("p_theory"));
-      EXPECT_NEAR(equal("floor_flux"), equal("darcy"), 0.05 * equal("darcy"));
-    } else {
-      EXPECT_GT(speed, 1e-3) << "i = 1.2";
+  HIDE_OUTPUT([&] {
+    command("clear");
+    command("units si");
+    command("variable gradients index 0.8");
+    command("include " + EXAMPLES + "/saturated/in.quick");
+  });
+  EXPECT_LT(std::fabs(equal("mean_speed")), 1e-4) << "i = 0.8";
+  EXPECT_NEAR(equal("base_pore_pressure"), equal("p_theory"), 0.01 * equal("p_theory"));
+  EXPECT_NEAR(equal("floor_flux"), equal("darcy"), 0.05 * equal("darcy"));
+
+  // the onset of heave (in.quick -var onset 1): 0.9 i_c held 0.1 s, then 1.1 i_c. The layer
+  // stays, then lifts off the drained floor, whose water fills the gap (doc/theory.rst 7.3), and
+  // accelerates with the water above it at the force balance's (i - i_c) gamma_w H /
+  // (rho_sat H + rho_w D) = 0.446 m/s^2: measured 0.367 (0.82 of it) at this 4 mm spacing, 0.85
+  // at 2 mm. Before the drained wall held its water across the gap, the layer rose at 3 mm/s and
+  // slowed.
+  std::remove("quick_onset.0.004.txt");
+  HIDE_OUTPUT([&] {
+    command("clear");
+    command("units si");
+    // (the first include defined it: variables outlive clear)
+    command("variable onset delete");
+    command("variable onset index 1");
+    command("include " + EXAMPLES + "/saturated/in.quick");
+    command("unfix record");    // (closes the file)
+  });
+  MPI_Barrier(MPI_COMM_WORLD);
+  std::vector<double> time, gradient, speed;
+  if (FILE *file = std::fopen("quick_onset.0.004.txt", "r")) {
+    char line[512];
+    while (std::fgets(line, sizeof(line), file)) {
+      double t, i, v, w;
+      if (line[0] != '#' && std::sscanf(line, "%lf %lf %lf %lf", &t, &i, &v, &w) == 4) {
+        time.push_back(t);
+        gradient.push_back(i);
+        speed.push_back(v);
+      }
+    }
+    std::fclose(file);
+  }
+  ASSERT_GT(time.size(), 40u) << "quick_onset.0.004.txt";
+  // at rest over the second half of the 0.9 hold; the slope of the speed over the last 0.04 s
+  double still = 0.0, t_sum = 0.0, v_sum = 0.0, tt = 0.0, tv = 0.0;
+  int n = 0;
+  const double hold = 0.1, end = time.back();
+  for (size_t k = 0; k < time.size(); k++) {
+    if (gradient[k] < 1.0 && time[k] > 0.5 * hold) still = std::max(still, std::fabs(speed[k]));
+    if (gradient[k] > 1.0 && time[k] >= end - 0.04) {
+      t_sum += time[k];
+      v_sum += speed[k];
+      tt += time[k] * time[k];
+      tv += time[k] * speed[k];
+      n++;
     }
   }
+  const double acceleration = (n * tv - t_sum * v_sum) / (n * tt - t_sum * t_sum);
+  const double balance = 0.1 * 1000.0 * 9.81 * 0.1 / (2000.0 * 0.1 + 1000.0 * 0.02);
+  std::printf("quick condition: at 0.9 i_c the layer's speed stays below %.1e m/s; at 1.1 i_c it "
+              "accelerates at %.3f m/s^2, %.2f of the force balance's %.3f\n",
+              still, acceleration, acceleration / balance, balance);
+  EXPECT_LT(still, 1e-4);
+  EXPECT_NEAR(acceleration, balance, 0.2 * balance);
 }
 
 // The same layer with Kozeny-Carman's permeability, its particles 5% less dense than its

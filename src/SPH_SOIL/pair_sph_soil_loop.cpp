@@ -305,6 +305,18 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   const int slip = walls->slips()[wall_type];
   SPHSoil::mirror_image<D>(ps, pw, normal, wall_distance, separation, slip, image);
   const double rhos = ps[P_RHO];
+  // soil lifting off a drained wall leaves a gap of the wall's water (soil_wall_images.h), its
+  // pressure in the packed stress's units (the multiphase form's is the stress itself)
+  if (walls->drained_mirror(wall_type)) {
+    const double gap = walls->gap(wall);
+    if (gap > 0.0) {
+      const double wall_pressure =
+          PHASES ? packed_pressure[wall] : avec->pore_pressure[wall] / (rhos * rhos);
+      SPHSoil::drained_image<D>(ps + P_STRESS, wall_pressure,
+                                SPHSoil::contact_share<D>(gap, ps[P_VOLUME]), normal, separation,
+                                image);
+    }
+  }
   const double viscosity_h =
       SPHSoil::viscosity_length(viscosity_h0, SPHSoil::viscosity_h_weight(viscosity_h0), hij);
   SPHSoil::PairTerms<D> terms;

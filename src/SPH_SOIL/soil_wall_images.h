@@ -119,6 +119,70 @@ inline void mirror_image(const double *ps, const double *pw, const double normal
   image.approach = approach;
 }
 
+/* A soil lifting off a drained wall (doc/theory.rst 7.3). Water at the wall's pressure fills the
+   gap that opens between the wall and the soil, and the filter behind it offers no resistance:
+   the wall stands where the soil's lowest particles would touch it, and its images carry, in
+   proportion to the contact that remains, the soil's own total stress (in contact the wall
+   reacts with the traction the soil puts on it) and, for the rest, the wall's water pressure;
+   the separation is not a dilation of the soil. Without this, the images' relative velocity
+   counted the separation as pore expansion (a suction of ~50 Pa that held a layer at 1.1 i_c)
+   and the widening gap in the particle lattice pulled the layer back. */
+
+// the gap between a soil particle and a mirror wall's plane: its distance beyond the plane less
+// the half spacing at which a lattice of its volume per particle touches the plane. (A particle
+// pressed on the wall but stretched along its normal relative to sideways by a strain e reads a
+// gap of about e s/4 and holds less of the contact: pushed less, it settles towards the wall
+// until it holds it again, a contact that gives by at most CONTACT_RANGE of the spacing. A
+// tolerance before the gap counted, 1% of the spacing, kept a layer at 1.1 i_c at 4 mm on the
+// floor: in contact its separation is a dilation, whose suction held it.)
+template <int DIMENSION> inline double gap_to_wall(double beyond_plane, double volume)
+{
+  const double spacing = DIMENSION == 2 ? std::sqrt(volume) : std::cbrt(volume);
+  return beyond_plane - 0.5 * spacing;
+}
+
+// the share of the skeleton's stress that a wall still holds across a gap: all of it in
+// contact, none once the gap is CONTACT_RANGE of the particle's spacing (a stiff contact; a step
+// would rattle a particle that rests on the wall)
+constexpr double CONTACT_RANGE = 0.01;
+template <int DIMENSION> inline double contact_share(double gap, double volume)
+{
+  if (gap <= 0.0) return 1.0;
+  const double spacing = DIMENSION == 2 ? std::sqrt(volume) : std::cbrt(volume);
+  const double share = 1.0 - gap / (CONTACT_RANGE * spacing);
+  return share > 0.0 ? share : 0.0;
+}
+
+// The image of a drained wall across a gap, where it holds `share` (contact_share()) of the
+// contact: `share` of the soil particle's image stress (its skeleton's and its pore pressure, as
+// a mirror wall's in contact), and for the rest the wall's water at `wall_pressure`; along the
+// normal it moves with the soil but for `share` of their relative velocity. `total_stress` is
+// the soil particle's total stress sigma' - p I (in the units of the image's stress sum, and so
+// is `wall_pressure`).
+template <int DIMENSION>
+inline void drained_image(const double total_stress[6], double wall_pressure, double share,
+                          const double n[3], const double separation[3], MirrorImage &image)
+{
+  if (share == 1.0) return;
+  for (int k = 0; k < 6; k++) {
+    const int a = VOIGT_ROW[k], b = VOIGT_COL[k];
+    if (a >= DIMENSION || b >= DIMENSION) continue;
+    // the image's own part of the sum: share of it, and the rest the wall's water
+    const double image_stress = image.stress_sum[k] - total_stress[k];
+    image.stress_sum[k] -= (1.0 - share) * (image_stress + (a == b ? wall_pressure : 0.0));
+  }
+  // the separation's share of the relative velocity fades with the contact, as a function of
+  // the gap alone (a dilation counted only while the soil lifts, as its velocity's sign would
+  // have it, ratchets a layer at rest upwards)
+  double vn = 0.0;
+  for (int a = 0; a < DIMENSION; a++) vn += image.dv[a] * n[a];
+  image.approach = 0.0;
+  for (int a = 0; a < DIMENSION; a++) {
+    image.dv[a] -= (1.0 - share) * vn * n[a];
+    image.approach += image.dv[a] * separation[a];
+  }
+}
+
 }    // namespace SPHSoil
 
 #endif

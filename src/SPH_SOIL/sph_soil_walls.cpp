@@ -13,6 +13,7 @@
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "pair.h"
 #include "soil_packed_rows.h"
 #include "soil_wall_images.h"
@@ -20,7 +21,9 @@
 #include "sph_soil_fixes.h"
 #include "sph_soil_offenders.h"
 #include "sph_soil_wall_friction.h"
+#include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -31,7 +34,8 @@ using namespace SPHSoil;
 
 SPHSoilWalls::SPHSoilWalls(LAMMPS *lmp, Pair *owner_) :
     Pointers(lmp), owner(owner_), avec(nullptr), has_mirror(false), has_extrapolated(false),
-    has_friction(false), friction(nullptr), friction_exchange(false), may_turn(false),
+    has_friction(false), has_drained_mirror(false), friction(nullptr),
+    exchange(Exchange::EXTRAPOLATION), may_turn(false),
     kinematics(nullptr), nmax(0), sums(nullptr), state(nullptr)
 {
   // one ID for every instance of the pair style, so that the fix finds its per-atom state
@@ -59,7 +63,8 @@ void SPHSoilWalls::classify(const std::vector<SoilMaterial> &materials,
   slip_of_type.assign(ntypes + 1, SLIP_NONE);
   friction_of_type.assign(ntypes + 1, 0.0);
   adhesion_of_type.assign(ntypes + 1, 0.0);
-  has_mirror = has_extrapolated = has_friction = false;
+  drained_mirror_of_type.assign(ntypes + 1, 0);
+  has_mirror = has_extrapolated = has_friction = has_drained_mirror = false;
   for (int t = 1; t <= ntypes; t++) {
     const SoilMaterial &m = materials[t];
     if (!has_material[t] || !m.is_wall()) continue;
@@ -70,6 +75,8 @@ void SPHSoilWalls::classify(const std::vector<SoilMaterial> &materials,
     kind_of_type[t] = extrapolated ? NEIGHBOUR_EXTRAPOLATED_WALL : NEIGHBOUR_MIRROR_WALL;
     has_extrapolated = has_extrapolated || extrapolated;
     has_mirror = has_mirror || !extrapolated;
+    drained_mirror_of_type[t] = !extrapolated && m.drained;
+    has_drained_mirror = has_drained_mirror || drained_mirror_of_type[t];
     // free slip and friction act across a plane; an extrapolated wall has none
     if (extrapolated && slip != WallSlip::noslip)
       SPHSoilCompat::error_all(
@@ -207,9 +214,9 @@ void SPHSoilWalls::create_kinematics()
   kinematics->set_wall_types(wall_of_type);
   if (friction) {
     kinematics->set_after_forces([this]() {
-      friction_exchange = true;
+      exchange = Exchange::FRICTION;
       friction->apply(avec->smoothing_length, kinematics->interface_pressures());
-      friction_exchange = false;
+      exchange = Exchange::EXTRAPOLATION;
     });
   } else {
     kinematics->set_after_forces(nullptr);
@@ -239,6 +246,80 @@ void SPHSoilWalls::prepare(double *packed, const NeighbourList &list, KernelKind
   if (may_turn) comm->forward_comm_array(4, atom->mu);
   if (friction) friction->begin_step();
   if (has_extrapolated) with_kernel(kernel, Extrapolate{this, packed, list, dimension});
+  if (has_drained_mirror) {
+    if (dimension == 2) follow_lifting_soil<2>(packed, list);
+    else follow_lifting_soil<3>(packed, list);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   soil lifting off a drained mirror wall (soil_wall_images.h, doc/theory.rst 7.3): each such
+   wall particle's gap, the least of its soil partners' gaps to its plane (0 in contact or with
+   no soil near), from the pairs on every rank; the wall particle then stands, in its packed
+   row, where that soil would touch it, so that its images and its pore water's flow see the
+   soil in contact with the water that fills the gap
+------------------------------------------------------------------------- */
+
+template <int DIMENSION> void SPHSoilWalls::follow_lifting_soil(double *packed, const NeighbourList &list)
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int *type = atom->type;
+  constexpr double NONE = 1.0e300;
+  gaps.assign(nall, NONE);
+  const int *partners = list.partner_data();
+  for (int i = 0; i < nlocal; i++) {
+    const bool wall_i = kind_of_type[type[i]] == NEIGHBOUR_MIRROR_WALL;
+    for (int jj = list.plain_end(i); jj < list.end(i); jj++) {
+      const int j = partners[jj];
+      const int wall = wall_i ? i : j, soil = wall_i ? j : i;
+      if (!drained_mirror_of_type[type[wall]]) continue;
+      const double *ps = packed + (size_t) soil * PACKED, *pw = packed + (size_t) wall * PACKED;
+      double separation[3] = {0.0, 0.0, 0.0};
+      for (int a = 0; a < DIMENSION; a++) separation[a] = ps[P_X + a] - pw[P_X + a];
+      const double beyond = beyond_wall_plane<DIMENSION>(separation, avec->wall_normal[wall],
+                                                         avec->wall_distance[wall]);
+      const double gap = gap_to_wall<DIMENSION>(beyond, ps[P_VOLUME]);
+      if (gap < gaps[wall]) gaps[wall] = gap;
+    }
+  }
+  // the least over every rank's pairs: to the owners, then back to the ghosts
+  exchange = Exchange::GAPS;
+  if (force->newton_pair) SPHSoilCompat::reverse_comm_pair(comm, owner);
+  for (int i = 0; i < nlocal; i++)
+    if (gaps[i] >= NONE || gaps[i] < 0.0) gaps[i] = 0.0;
+  SPHSoilCompat::forward_comm_pair(comm, owner);
+  exchange = Exchange::EXTRAPOLATION;
+  // the wall follows the soil by at most half the neighbour skin: its pairs with the soil then
+  // stay in the neighbour list (built at a distance of the cut-off plus the skin, rebuilt before
+  // any particle has moved half the skin). A soil that lifts further leaves the wall behind.
+  const double reach = 0.5 * neighbor->skin;
+  double widest = 0.0;
+  for (int i = 0; i < nall; i++) {
+    if (!drained_mirror_of_type[type[i]]) continue;
+    if (!(gaps[i] > 0.0) || gaps[i] >= NONE) {
+      gaps[i] = 0.0;
+      continue;
+    }
+    if (i < nlocal) widest = std::max(widest, gaps[i]);
+    const double shift = std::min(gaps[i], reach);
+    const double *n = avec->wall_normal[i];
+    for (int a = 0; a < DIMENSION; a++) packed[(size_t) i * PACKED + P_X + a] += shift * n[a];
+  }
+  // once per run of LAMMPS: the soil has left a drained wall behind
+  if (!warned_reach) {
+    double widest_all = 0.0;
+    MPI_Allreduce(&widest, &widest_all, 1, MPI_DOUBLE, MPI_MAX, world);
+    if (widest_all > reach) {
+      warned_reach = true;
+      if (comm->me == 0)
+        error->warning(FLERR,
+                       "Pair sph/soil: soil has lifted {:.4g} off a drained wall at step {}, more "
+                       "than half the neighbour skin ({:.4g}): the wall no longer follows it, "
+                       "and its water pushes less as the gap widens (a larger skin, command "
+                       "neighbor, follows further)",
+                       widest_all, update->ntimestep, reach);
+    }
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -355,8 +436,12 @@ template <int DIMENSION> void SPHSoilWalls::extrapolated_states(double *packed)
 
 int SPHSoilWalls::pack_reverse_comm(int n, int first, double *buf)
 {
-  if (friction_exchange) return friction->pack_reverse_comm(n, first, buf);
+  if (exchange == Exchange::FRICTION) return friction->pack_reverse_comm(n, first, buf);
   int m = 0;
+  if (exchange == Exchange::GAPS) {
+    for (int i = first; i < first + n; i++) buf[m++] = gaps[i];
+    return m;
+  }
   for (int i = first; i < first + n; i++)
     for (int k = 0; k < XSUMS; k++) buf[m++] = sums[(size_t) i * XSUMS + k];
   return m;
@@ -364,19 +449,27 @@ int SPHSoilWalls::pack_reverse_comm(int n, int first, double *buf)
 
 void SPHSoilWalls::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  if (friction_exchange) {
+  if (exchange == Exchange::FRICTION) {
     friction->unpack_reverse_comm(n, list, buf);
     return;
   }
   int m = 0;
+  if (exchange == Exchange::GAPS) {
+    for (int k = 0; k < n; k++) gaps[list[k]] = std::min(gaps[list[k]], buf[m++]);
+    return;
+  }
   for (int k = 0; k < n; k++)
     for (int c = 0; c < XSUMS; c++) sums[(size_t) list[k] * XSUMS + c] += buf[m++];
 }
 
 int SPHSoilWalls::pack_forward_comm(int n, int *list, double *buf)
 {
-  if (friction_exchange) return friction->pack_forward_comm(n, list, buf);
+  if (exchange == Exchange::FRICTION) return friction->pack_forward_comm(n, list, buf);
   int m = 0;
+  if (exchange == Exchange::GAPS) {
+    for (int k = 0; k < n; k++) buf[m++] = gaps[list[k]];
+    return m;
+  }
   for (int k = 0; k < n; k++)
     for (int c = 0; c < WSTATE; c++) buf[m++] = state[(size_t) list[k] * WSTATE + c];
   return m;
@@ -384,18 +477,23 @@ int SPHSoilWalls::pack_forward_comm(int n, int *list, double *buf)
 
 void SPHSoilWalls::unpack_forward_comm(int n, int first, double *buf)
 {
-  if (friction_exchange) {
+  if (exchange == Exchange::FRICTION) {
     friction->unpack_forward_comm(n, first, buf);
     return;
   }
   int m = 0;
+  if (exchange == Exchange::GAPS) {
+    for (int i = first; i < first + n; i++) gaps[i] = buf[m++];
+    return;
+  }
   for (int i = first; i < first + n; i++)
     for (int c = 0; c < WSTATE; c++) state[(size_t) i * WSTATE + c] = buf[m++];
 }
 
 double SPHSoilWalls::memory_usage() const
 {
-  return (double) nmax * (XSUMS + WSTATE) * sizeof(double) + (friction ? friction->memory_usage() : 0.0);
+  return (double) nmax * (XSUMS + WSTATE) * sizeof(double) + (double) gaps.capacity() * sizeof(double) +
+      (friction ? friction->memory_usage() : 0.0);
 }
 
 /* ----------------------------------------------------------------------

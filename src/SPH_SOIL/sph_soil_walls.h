@@ -62,6 +62,10 @@ class SPHSoilWalls : protected Pointers {
   const int *slips() const { return slip_of_type.data(); }
   const double *frictions() const { return friction_of_type.data(); }
   const double *adhesions() const { return adhesion_of_type.data(); }
+  // whether a type is a drained mirror wall, and the gap between such a wall particle and the
+  // soil lifting off it (0 in contact; soil_wall_images.h's drained_image()), this step
+  bool drained_mirror(int type) const { return drained_mirror_of_type[type] != 0; }
+  double gap(int i) const { return gaps[i]; }
 
   // before the pair loop, with the loop's packed rows (soil_packed_rows.h) of the owned and
   // ghost atoms and the pair list: turned normals to the ghosts; the extrapolated walls' state
@@ -87,6 +91,10 @@ class SPHSoilWalls : protected Pointers {
   // owned soil particles beyond the plane of a mirror wall particle they pair with (this rank)
   bigint soil_behind_planes(const SPHSoil::NeighbourList &list) const;
 
+  // the gaps under soil lifting off drained mirror walls, each such wall particle moved in its
+  // packed row to where the soil would touch it (public: prepare()'s dimension dispatch)
+  template <int DIMENSION> void follow_lifting_soil(double *packed, const SPHSoil::NeighbourList &list);
+
   // the extrapolation's own pass over the soil-wall pairs (public: with_kernel() calls it)
   template <int DIMENSION, class Kernel>
   void extrapolate(double *packed, const SPHSoil::NeighbourList &list);
@@ -94,11 +102,14 @@ class SPHSoilWalls : protected Pointers {
  private:
   class Pair *owner;
   class AtomVecSPHSoil *avec;
-  std::vector<int> kind_of_type, slip_of_type;
+  std::vector<int> kind_of_type, slip_of_type, drained_mirror_of_type;
   std::vector<double> friction_of_type, adhesion_of_type;
-  bool has_mirror, has_extrapolated, has_friction;
+  bool has_mirror, has_extrapolated, has_friction, has_drained_mirror;
   class SPHSoilWallFriction *friction;
-  bool friction_exchange;    // the communication in progress is the interface's
+  // whose data the communication in progress carries
+  enum class Exchange { EXTRAPOLATION, FRICTION, GAPS } exchange;
+  std::vector<double> gaps;    // gap() of the owned and ghost atoms
+  bool warned_reach = false;   // that soil has lifted off a drained wall beyond its reach
   bool may_turn;    // mirror walls and a fix that may turn them: their normals go to the
                     // ghosts every step
   std::vector<class Fix *> gravity_fixes;    // their 'gvec': the soil's body force
