@@ -413,6 +413,14 @@ std::vector<BadInput> cases()
           "yield surface (atom 1 of type 1");
 
   // ---- warnings of the pair style at a run
+  // soil 2 mm off a drained floor, whose images follow it by half the 2 mm skin only
+  warning("SoilLiftedBeyondTheDrainedWallsReach", "walls",
+          {"change_box all boundary p f p", "pair_coeff 2 2 wall drained", "neighbor 0.002 bin",
+           "displace_atoms soil move 0 0.002 0 units box"},
+          "run 0 post no",
+          "Pair sph/soil: soil has lifted 0.002 off a drained wall at step 0, more than half the "
+          "neighbour skin (0.001): the wall no longer follows it, and its water pushes less as the "
+          "gap widens (a larger skin, command neighbor, follows further)");
   warning("NeighModifyExcludeIgnored", "walls", {"neigh_modify exclude type 2 2"}, "run 0 post no",
           "Pair sph/soil builds its own neighbour list: neigh_modify exclude has no effect on it");
   warning("DensityFarFromReference", "walls", {"sph_soil/set soil density 2000 mass 0.2"},
