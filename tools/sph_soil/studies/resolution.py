@@ -17,10 +17,9 @@ doc/refinement_resolution.json and doc/img/refinement_bars_fixed_dissipation.png
 
 A run is skipped when its final dump is newer than the input and the binary.
 """
-import math
 import os
 
-from .. import paths, report, runner
+from .. import paths, report, runner, verification
 from ..dumps import read_dump
 from . import refinement
 
@@ -74,9 +73,11 @@ def measure(spacings, directory):
     for first, second in zip(differences, differences[1:]):
         e1, e2 = first['surface_rms_difference_m'], second['surface_rms_difference_m']
         a1, a2 = abs(first['angle_difference_deg']), abs(second['angle_difference_deg'])
+        surface_order = verification.order_of_differences(e1, e2)
+        angle_order = verification.order_of_differences(a1, a2)
         orders.append(dict(spacings_m=first['spacings_m'] + second['spacings_m'][1:],
-                           surface_order=round(math.log2(e1 / e2), 2) if e2 > 0 else None,
-                           angle_order=round(math.log2(a1 / a2), 2) if a2 > 0 else None))
+                           surface_order=None if surface_order is None else round(surface_order, 2),
+                           angle_order=None if angle_order is None else round(angle_order, 2)))
     return dict(viscosity_h0_m=VISCOSITY_H0, runs=runs, successive=differences, observed_order=orders), profiles
 
 
