@@ -13,19 +13,10 @@ import argparse
 
 import numpy as np
 
+from dump_frames import frames
+
 H, CREST, HW, DRAWDOWN = 0.2, 0.4, 0.23, 0.05
 
-
-def frames(path):
-    """every frame of a dump custom file: (step, dict of columns)"""
-    out = []
-    for chunk in open(path).read().split("ITEM: TIMESTEP")[1:]:
-        lines = chunk.strip().split("\n")
-        start = next(k for k, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
-        names = lines[start].split()[2:]
-        values = np.array([[float(x) for x in line.split()] for line in lines[start + 1:]])
-        out.append((int(lines[0]), {name: values[:, k] for k, name in enumerate(names)}))
-    return out
 
 
 def history(path):

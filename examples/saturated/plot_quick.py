@@ -21,15 +21,17 @@ import numpy as np
 
 
 def read(path):
-    """The header's parameters and the rows (time, i, soil's and water's mean speed)."""
-    header = open(path).readline().lstrip("# ").strip().split(", ")
-    words = " ".join(header[-1:] + header[3:-1]).replace(",", "").split()
+    """The header's parameters (its "name value [unit]" items: d, H, D, rho_sat, rho_w, g) and
+    the rows (time, i, soil's and water's mean speed)."""
+    header = open(path).readline().lstrip("# ").strip()
     params = {}
-    for k in range(len(words) - 1):
-        try:
-            params[words[k]] = float(words[k + 1])
-        except ValueError:
-            pass
+    for item in header.split(", "):
+        words = item.split()
+        if len(words) >= 2:
+            try:
+                params[words[0]] = float(words[1])
+            except ValueError:
+                pass
     rows = np.loadtxt(path, comments="#", ndmin=2)
     return params, rows
 

@@ -13,21 +13,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+from dump_frames import frames
+
 L0, H0, D = 0.05, 0.04, 0.05    # column length and height, water depth (m), as in the input
 SPACING = 0.0025                # the particle spacing d of the input (m)
 PLOTTED = 0.105                 # the part of the 0.16 m tank that is drawn (m)
 
-
-def frames(path):
-    """All frames of a dump custom file: [(step, {column: values})]."""
-    out = []
-    for block in open(path).read().split("ITEM: TIMESTEP")[1:]:
-        lines = block.strip().split("\n")
-        start = next(k for k, line in enumerate(lines) if line.startswith("ITEM: ATOMS"))
-        names = lines[start].split()[2:]
-        values = np.array([[float(x) for x in line.split()] for line in lines[start + 1:]])
-        out.append((int(lines[0]), {name: values[:, k] for k, name in enumerate(names)}))
-    return out
 
 
 def deposit_front(atoms):

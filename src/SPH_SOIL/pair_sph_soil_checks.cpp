@@ -13,7 +13,6 @@
 #include "modify.h"
 #include "neighbor.h"
 #include "soil_kernels.h"
-#include "soil_refine_split.h"
 #include "sph_soil_compat.h"
 #include "sph_soil_fixes.h"
 #include "sph_soil_memory.h"

@@ -14,7 +14,7 @@
 #include "soil_gradient_correction.h"
 #include "soil_packed_rows.h"
 #include "soil_pair_terms.h"
-#include "soil_refine_split.h"
+#include "soil_kernels.h"
 #include "soil_wall_images.h"
 #include "sph_soil_gradient_correction.h"
 #include "sph_soil_pore_water.h"
@@ -537,10 +537,9 @@ void PairSPHSoil::eval()
       if (across) {
         double trace = 0.0;
         for (int c = 0; c < D; c++) trace += terms.gradient[c][c];
-        for (int c = 0; c < D; c++)
-          for (int d = 0; d < D; d++) terms.gradient[c][d] = 0.0;
         across_i += volume_j * trace;
         oj[S_ACROSS<D>()] += volume_i * trace;
+        continue;
       }
       // g_i += V_j (v_j - v_i) x grad, and g_j += V_i (v_i - v_j) x (-grad): the same tensor
       for (int c = 0; c < D; c++)

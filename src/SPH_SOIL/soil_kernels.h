@@ -20,6 +20,7 @@
 #include "soil_kernel_cubic.h"
 #include "soil_kernel_wendland.h"
 
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -111,6 +112,12 @@ namespace kernel_facts {
     template <class Kernel> double operator()() const { return Kernel::gradient_factor(dimension, r, h); }
   };
 }    // namespace kernel_facts
+
+// The spacing d = V^(1/D) of a particle of volume V = m / rho, in `dimension` 2 or 3.
+inline double volume_spacing(double volume, int dimension)
+{
+  return dimension == 3 ? std::cbrt(volume) : std::sqrt(volume);
+}
 
 inline double kernel_support(KernelKind kind) { return with_kernel(kind, kernel_facts::Support()); }
 inline double kernel_inflection(KernelKind kind) { return with_kernel(kind, kernel_facts::Inflection()); }

@@ -45,12 +45,6 @@ inline int daughter_offsets(int dimension, double separation, double parent_spac
   return count;
 }
 
-// The spacing d = V^(1/D) of a particle of volume V = m / rho, in `dimension` 2 or 3.
-inline double volume_spacing(double volume, int dimension)
-{
-  return dimension == 3 ? std::cbrt(volume) : std::sqrt(volume);
-}
-
 // The spacing of a particle of refinement level `level`: d_ref halves at each level.
 inline double level_spacing(double reference_spacing, int level)
 {

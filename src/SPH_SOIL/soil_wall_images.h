@@ -16,6 +16,7 @@
 #ifndef LMP_SOIL_WALL_IMAGES_H
 #define LMP_SOIL_WALL_IMAGES_H
 
+#include "soil_kernels.h"
 #include "soil_packed_rows.h"
 #include "soil_tensor.h"
 
@@ -137,8 +138,7 @@ inline void mirror_image(const double *ps, const double *pw, const double normal
 // floor: in contact its separation is a dilation, whose suction held it.)
 template <int DIMENSION> inline double gap_to_wall(double beyond_plane, double volume)
 {
-  const double spacing = DIMENSION == 2 ? std::sqrt(volume) : std::cbrt(volume);
-  return beyond_plane - 0.5 * spacing;
+  return beyond_plane - 0.5 * volume_spacing(volume, DIMENSION);
 }
 
 // the share of the skeleton's stress that a wall still holds across a gap: all of it in
@@ -148,8 +148,7 @@ constexpr double CONTACT_RANGE = 0.01;
 template <int DIMENSION> inline double contact_share(double gap, double volume)
 {
   if (gap <= 0.0) return 1.0;
-  const double spacing = DIMENSION == 2 ? std::sqrt(volume) : std::cbrt(volume);
-  const double share = 1.0 - gap / (CONTACT_RANGE * spacing);
+  const double share = 1.0 - gap / (CONTACT_RANGE * volume_spacing(volume, DIMENSION));
   return share > 0.0 ? share : 0.0;
 }
 

@@ -266,22 +266,16 @@ template <int DIMENSION> void SPHSoilWalls::follow_lifting_soil(double *packed, 
   const int *type = atom->type;
   constexpr double NONE = 1.0e300;
   gaps.assign(nall, NONE);
-  const int *partners = list.partner_data();
-  for (int i = 0; i < nlocal; i++) {
-    const bool wall_i = kind_of_type[type[i]] == NEIGHBOUR_MIRROR_WALL;
-    for (int jj = list.plain_end(i); jj < list.end(i); jj++) {
-      const int j = partners[jj];
-      const int wall = wall_i ? i : j, soil = wall_i ? j : i;
-      if (!drained_mirror_of_type[type[wall]]) continue;
-      const double *ps = packed + (size_t) soil * PACKED, *pw = packed + (size_t) wall * PACKED;
-      double separation[3] = {0.0, 0.0, 0.0};
-      for (int a = 0; a < DIMENSION; a++) separation[a] = ps[P_X + a] - pw[P_X + a];
-      const double beyond = beyond_wall_plane<DIMENSION>(separation, avec->wall_normal[wall],
-                                                         avec->wall_distance[wall]);
-      const double gap = gap_to_wall<DIMENSION>(beyond, ps[P_VOLUME]);
-      if (gap < gaps[wall]) gaps[wall] = gap;
-    }
-  }
+  each_mirror_pair(list, atom->nlocal, [&](int soil, int wall) {
+    if (!drained_mirror_of_type[type[wall]]) return;
+    const double *ps = packed + (size_t) soil * PACKED, *pw = packed + (size_t) wall * PACKED;
+    double separation[3] = {0.0, 0.0, 0.0};
+    for (int a = 0; a < DIMENSION; a++) separation[a] = ps[P_X + a] - pw[P_X + a];
+    const double beyond = beyond_wall_plane<DIMENSION>(separation, avec->wall_normal[wall],
+                                                       avec->wall_distance[wall]);
+    const double gap = gap_to_wall<DIMENSION>(beyond, ps[P_VOLUME]);
+    if (gap < gaps[wall]) gaps[wall] = gap;
+  });
   // the least over every rank's pairs: to the owners, then back to the ghosts
   exchange = Exchange::GAPS;
   if (force->newton_pair) SPHSoilCompat::reverse_comm_pair(comm, owner);
@@ -305,8 +299,10 @@ template <int DIMENSION> void SPHSoilWalls::follow_lifting_soil(double *packed, 
     const double *n = avec->wall_normal[i];
     for (int a = 0; a < DIMENSION; a++) packed[(size_t) i * PACKED + P_X + a] += shift * n[a];
   }
-  // once per run of LAMMPS: the soil has left a drained wall behind
-  if (!warned_reach) {
+  // once per run of LAMMPS: the soil has left a drained wall behind (looked for where LAMMPS
+  // rebuilds its neighbour lists, at least once for every half skin that a particle moves: a
+  // reduction over the ranks every step would cost more than the pass)
+  if (!warned_reach && neighbor->ago == 0) {
     double widest_all = 0.0;
     MPI_Allreduce(&widest, &widest_all, 1, MPI_DOUBLE, MPI_MAX, world);
     if (widest_all > reach) {
@@ -503,23 +499,17 @@ double SPHSoilWalls::memory_usage() const
 bigint SPHSoilWalls::soil_behind_planes(const NeighbourList &list) const
 {
   if (!has_mirror || !avec) return 0;
-  const int *type = atom->type;
   const int nlocal = atom->nlocal;
   double **x = atom->x;
-  const int *partners = list.partner_data();
   // each pair is listed at one of its atoms: mark the owned soil particles found behind
   std::vector<char> behind(nlocal, 0);
-  for (int i = 0; i < list.size() && i < nlocal; i++)
-    for (int jj = list.plain_end(i); jj < list.end(i); jj++) {
-      const int j = partners[jj];
-      const bool wall_i = kind_of_type[type[i]] == NEIGHBOUR_MIRROR_WALL;
-      const int s = wall_i ? j : i, w = wall_i ? i : j;
-      if (s >= nlocal) continue;
-      const double separation[3] = {x[s][0] - x[w][0], x[s][1] - x[w][1], x[s][2] - x[w][2]};
-      const double beyond =
-          beyond_wall_plane<3>(separation, avec->wall_normal[w], avec->wall_distance[w]);
-      if (beyond < 0.0) behind[s] = 1;
-    }
+  each_mirror_pair(list, std::min(list.size(), nlocal), [&](int s, int w) {
+    if (s >= nlocal) return;
+    const double separation[3] = {x[s][0] - x[w][0], x[s][1] - x[w][1], x[s][2] - x[w][2]};
+    const double beyond =
+        beyond_wall_plane<3>(separation, avec->wall_normal[w], avec->wall_distance[w]);
+    if (beyond < 0.0) behind[s] = 1;
+  });
   bigint count = 0;
   for (char b : behind) count += b;
   return count;

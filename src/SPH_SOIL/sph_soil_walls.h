@@ -24,6 +24,7 @@
 #ifndef LMP_SPH_SOIL_WALLS_H
 #define LMP_SPH_SOIL_WALLS_H
 
+#include "atom.h"
 #include "lmptype.h"
 #include "pointers.h"
 #include "soil_kernels.h"
@@ -116,6 +117,18 @@ class SPHSoilWalls : protected Pointers {
   class FixSPHSoilWalls *kinematics;
   std::string kinematics_id;
   void create_kinematics();
+  // f(soil, wall) for every pair of a soil particle and a mirror wall particle listed at the
+  // first `count` atoms of the pair list (soil_neighbours.h: after each atom's plain pairs)
+  template <class F> void each_mirror_pair(const SPHSoil::NeighbourList &list, int count, F f) const
+  {
+    const int *type = atom->type;
+    const int *partners = list.partner_data();
+    for (int i = 0; i < count; i++) {
+      const bool wall_i = kind_of_type[type[i]] == SPHSoil::NEIGHBOUR_MIRROR_WALL;
+      for (int jj = list.plain_end(i); jj < list.end(i); jj++)
+        wall_i ? f(partners[jj], i) : f(i, partners[jj]);
+    }
+  }
 
   // Per atom, the soil's kernel-weighted sums at an extrapolated wall particle: weight sum
   // V_s W, stress, density, rho_s (x_w - x_s) for the hydrostatic correction, velocity; and
