@@ -6,7 +6,9 @@ Drucker-Prager with the exact plane-strain fit) at two resolutions (B/d = 10 and
 each in its own directory under --workdir, and reads bearing.dat (q against the settlement,
 averaged over 0.01 s) and the log's last line. The limit pressure is the mean of q over the last
 third of the push: settlement 0.10-0.15 B (the input's f_limit, an average over every step of
-that part). Also reported: q at settlements 0.05 B and 0.10 B and the largest q. Prandtl:
+that part). Also reported: q at settlements 0.05 B and 0.10 B, the largest q, and the early
+mean of q over settlements 0.02-0.05 B (of the 0.01 s averages), after the curve has bent and
+before the footing has sunk far into the soil. Prandtl:
 N_c = 2 + pi for phi = 0, (N_q - 1) cot(phi) with N_q = exp(pi tan phi) tan^2(45 + phi/2)
 otherwise (14.83 at 20 degrees). --check-speed adds a run at half the speed for each phi at the
 coarse resolution (inertia and artificial viscosity: the limit pressure should not move by more
@@ -56,6 +58,7 @@ from ..inputs import input_variables
 from ..logs import Log
 
 COMMAND = 'bearing-capacity'
+EARLY = (0.02, 0.05)    # settlements / B: the early mean of q, after the curve has bent, before the footing sinks in
 EXDIR = paths.example_dir('bearing_capacity')
 EXAMPLE = paths.example_input('bearing_capacity')
 DEFAULTS = input_variables(EXAMPLE)
@@ -99,6 +102,9 @@ def measure(directory, phi, resolution, speed, c, slip, tension, returncode, sec
             result[f'q_at_{s:.2f}B_over_cNc'] = round(float(np.interp(s, settle, q)) / (c * nc), 4)
     if len(q):
         result['q_max_over_cNc'] = round(float(q.max()) / (c * nc), 4)
+    early = (settle >= EARLY[0]) & (settle < EARLY[1])
+    if len(settle) and settle[-1] >= EARLY[1]:
+        result['q_early_over_cNc'] = round(float(q[early].mean()) / (c * nc), 4)
     result['settlement'] = settle.tolist()
     result['q_over_c'] = (q / c).tolist()
     end = glob.glob(os.path.join(directory, 'frame.end.*.png'))

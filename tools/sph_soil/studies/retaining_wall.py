@@ -54,8 +54,8 @@ def limit(phi_deg, delta_deg, passive):
     return k * math.cos(delta)
 
 
-def earth_pressure(runs, phi=30.0, height=1.0, json_path=None, plot=None):
-    """runs: LABEL=FILE[@DELTA] each."""
+def earth_pressure(runs, phi=30.0, height=1.0, json_path=None, plot=None, echo=True):
+    """runs: LABEL=FILE[@DELTA] each; echo prints the JSON."""
     k0 = 1.0 - math.sin(math.radians(phi))
     result = {'phi_deg': phi, 'K0': k0, 'Ka': limit(phi, 0.0, False), 'Kp': limit(phi, 0.0, True),
               'runs': {}}
@@ -99,7 +99,7 @@ def earth_pressure(runs, phi=30.0, height=1.0, json_path=None, plot=None):
         result['runs'][label] = r
         moved = shift != 0.0
         curves.append((label, np.abs(shift[moved]) / height, k[moved], r))
-    report.write_json(result, json_path, indent=1, end='')
+    report.write_json(result, json_path, indent=1, end='', echo=echo)
     if plot:
         plt = report.pyplot()
         kinds = [kind for kind in ('active', 'passive') if any(c[3]['wall'] == kind for c in curves)]
