@@ -156,3 +156,26 @@ def test_uneven_spacings_are_refused():
         checks.ratio_of((0.1, 0.05, 0.03))
     with pytest.raises(SystemExit, match='no check'):
         checks.check('nonsense')
+
+
+def test_a_check_that_solves_takes_its_answer_from_several_runs(tmp_path):
+    calls = []
+
+    def solve(lmp, directory, variables, np):
+        d = float(dict(variables)['d'])
+        calls.append(d)
+        if d < 0.03:
+            raise RuntimeError('vertical cut: [3.0, 4.5] is not a bracket')
+        return {'critical_ratio': 1.0 + d, 'half_width': 0.002}
+
+    cut = checks.Check('cut', 'vertical_cut', 'a cut', 'a reference', spacings=(0.1, 0.05, 0.025),
+                       short_spacings=(0.1, 0.05, 0.025), answers={'critical_ratio': 'ratio'}, measure=None,
+                       solve=solve)
+    result = convergence.convergence(None, cut, arguments(tmp_path))
+    assert calls == [0.1, 0.05, 0.025]
+    assert result['answers']['critical_ratio']['values'][:2] == [1.1, 1.05]
+    assert result['runs'][0]['diagnostics'] == {'half_width': 0.002}
+    assert 'not a bracket' in result['runs'][2]['error'] and result['runs'][2]['returncode'] == 1
+    # saved, a failure too (it is a result): not solved again, not even with --remeasure
+    convergence.convergence(None, cut, arguments(tmp_path, remeasure=True))
+    assert calls == [0.1, 0.05, 0.025]

@@ -37,6 +37,7 @@ import json
 import os
 import shutil
 import sys
+import time
 
 from .. import paths, report, runner, verification
 from . import convergence_checks as checks
@@ -74,30 +75,41 @@ def run_one(lmp, check, spacing, factor, args):
         with open(saved) as f:
             previous = json.load(f)
         if previous.get('variables') == [list(v) for v in variables]:
-            if getattr(args, 'remeasure', False):
+            if getattr(args, 'remeasure', False) and not check.solve:
                 return save(check, spacing, previous, saved)
             return previous
-    # LAMMPS reads its input as it goes: run a copy, which an edit of the example cannot change
     os.makedirs(directory, exist_ok=True)
+    run = {'spacing': spacing, 'dissipation_factor': factor, 'dissipation': check.dissipation * factor,
+           'variables': [list(v) for v in variables], 'directory': directory}
+    start = time.time()
+    if check.solve:
+        # an answer of several runs, each in a directory of its own under this one
+        try:
+            measured = check.solve(lmp, directory, variables, args.np)
+        except RuntimeError as e:
+            measured = e
+        run.update(returncode=0 if isinstance(measured, dict) else 1, wall_seconds=round(time.time() - start, 1))
+        return save(check, spacing, run, saved, measured)
+    # LAMMPS reads its input as it goes: run a copy, which an edit of the example cannot change
     infile = os.path.join(directory, os.path.basename(check.infile))
     shutil.copy(check.infile, infile)
     runner.link_inputs(check.infile, directory)
     done = lmp.run(infile, directory, np=args.np, variables=variables)
-    run = {'spacing': spacing, 'dissipation_factor': factor, 'dissipation': check.dissipation * factor,
-           'variables': [list(v) for v in variables], 'returncode': done.returncode,
-           'wall_seconds': round(done.seconds, 1), 'directory': directory}
+    run.update(returncode=done.returncode, wall_seconds=round(done.seconds, 1))
     return save(check, spacing, run, saved)
 
 
-def save(check, spacing, run, saved):
+def save(check, spacing, run, saved, measured=None):
     """Measure a finished run (its answers, the diagnostics, or the error that stopped it) and
-    save it beside the run."""
-    try:
-        measured = check.measure(run['directory'], spacing)
-    except (RuntimeError, OSError, ValueError, IndexError) as e:
-        measured, error = {}, str(e)
-    else:
-        error = None
+    save it beside the run; `measured`: what a check that solves measured (or its error)."""
+    error = None
+    if isinstance(measured, Exception):
+        measured, error = {}, str(measured)
+    elif measured is None:
+        try:
+            measured = check.measure(run['directory'], spacing)
+        except (RuntimeError, OSError, ValueError, IndexError) as e:
+            measured, error = {}, str(e)
     run = {k: v for k, v in run.items() if k not in ('answers', 'diagnostics', 'error')}
     run['answers'] = {k: measured[k] for k in check.answers if measured.get(k) is not None}
     run['diagnostics'] = {k: v for k, v in measured.items() if k not in check.answers}

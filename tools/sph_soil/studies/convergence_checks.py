@@ -10,11 +10,13 @@ reference comes from. A new check is one entry here.
 import importlib.util
 import math
 import os
+import shutil
 from dataclasses import dataclass
 
 from .. import paths
 from ..inputs import input_variables
-from . import bearing_capacity, elastic_column, retaining_wall
+from .. import bisection
+from . import bearing_capacity, elastic_column, retaining_wall, vertical_cut
 
 
 COHESION = float(input_variables(paths.example_input('bearing_capacity'))['c'])   # Pa
@@ -36,6 +38,8 @@ class Check:
     spacing_variable: str = 'd'
     dissipation_variable: str = 'viscosity'
     dissipation: float = 1.0      # the example's own value of the dissipation variable
+    solve: object = None          # solve(lmp, directory, variables, np) -> measure()'s dict, for a check
+                                  # whose answer takes several runs (a bisection); None: one run
 
     @property
     def infile(self):
@@ -94,6 +98,34 @@ def measure_terzaghi(directory, spacing):
     return {f'U_at_Tv_{tv:g}': row['U'] / row['U_terzaghi'] for tv, row in zip(TERZAGHI_TIMES, table)}
 
 
+CUT_BRACKET = (3.0, 4.5)      # gamma H / c: stands at the first, fails at the second
+CUT_STEPS = 7                 # bisections: the critical ratio to +- 0.006 (0.16% of Pastor's)
+
+
+def solve_vertical_cut(lmp, directory, variables, np):
+    """The critical gamma H / c of the vertical cut at one spacing, by bisection (each ratio's run
+    in a directory of its own), over the middle of Pastor et al.'s bounds."""
+    reference = 0.5 * sum(vertical_cut.PASTOR)
+
+    def run(ratio):
+        sub = os.path.join(directory, f'ratio{ratio:.4f}')
+        os.makedirs(sub, exist_ok=True)
+        infile = os.path.join(sub, os.path.basename(vertical_cut.EXAMPLE))
+        shutil.copy(vertical_cut.EXAMPLE, infile)
+        done = lmp.run(infile, sub, np=np, variables=list(variables) + [('ratio', f'{ratio:.6g}')])
+        try:
+            return vertical_cut.measure(sub, ratio, seconds=done.seconds)
+        except SystemExit as e:
+            raise RuntimeError(str(e)) from None
+
+    try:
+        runs, low, high = bisection.bisect(run, *CUT_BRACKET, CUT_STEPS, 'vertical cut')
+    except SystemExit as e:
+        raise RuntimeError(str(e)) from None
+    return {'critical_ratio': 0.5 * (low + high) / reference, 'half_width': 0.5 * (high - low) / reference,
+            'runs': len(runs)}
+
+
 CHECKS = {c.name: c for c in [
     Check('elastic', 'elastic_column',
           'an elastic column settling under its own weight in a smooth box',
@@ -109,11 +141,11 @@ CHECKS = {c.name: c for c in [
           answers=PRANDTL_ANSWERS, measure=measure_prandtl,
           variables=(('phi', '0'), ('width', '8'), ('depth', '2.5'))),
     Check('prandtl-rough', 'bearing_capacity',
-          'a rough rigid strip footing on weightless phi = 0 soil (box 8 B x 2.5 B)',
+          'a strip footing with a rough base on weightless phi = 0 soil (box 8 B x 2.5 B)',
           "Prandtl: q = (2 + pi) c (the same for a rough footing on weightless soil)",
           spacings=(0.1, 0.05, 0.025), short_spacings=(0.2, 0.1, 0.05),
           answers=PRANDTL_ANSWERS, measure=measure_prandtl,
-          variables=(('phi', '0'), ('width', '8'), ('depth', '2.5'), ('slip', 'noslip'), ('tension', '-1'))),
+          variables=(('phi', '0'), ('width', '8'), ('depth', '2.5'), ('slip', 'noslip'))),
     Check('rankine-smooth', 'retaining_wall',
           'active earth pressure on a smooth wall, phi = 30 degrees',
           "Rankine: K_a = (1 - sin phi) / (1 + sin phi) = 1/3",
@@ -132,6 +164,11 @@ CHECKS = {c.name: c for c in [
           answers={'U_at_Tv_0.2': 'U at T_v = 0.2 / Terzaghi', 'U_at_Tv_0.05': 'U at T_v = 0.05 / Terzaghi'},
           measure=measure_terzaghi, input='in.consolidation', variables=(('time', '0.1'),),
           dissipation=0.1),
+    Check('vertical-cut', 'vertical_cut', 'the critical height of a vertical cut in phi = 0 soil',
+          'Pastor, Thai & Francescato (2000): gamma H / c between 3.772 and 3.786 (their middle, 3.779)',
+          spacings=(0.1, 0.05, 0.025), short_spacings=(0.1, 0.05, 0.025),
+          answers={'critical_ratio': f'the critical gamma H / c by bisection ({CUT_STEPS} steps) / 3.779'},
+          measure=None, solve=solve_vertical_cut),
 ]}
 
 def check(name):
