@@ -179,3 +179,30 @@ def test_a_check_that_solves_takes_its_answer_from_several_runs(tmp_path):
     # saved, a failure too (it is a result): not solved again, not even with --remeasure
     convergence.convergence(None, cut, arguments(tmp_path, remeasure=True))
     assert calls == [0.1, 0.05, 0.025]
+
+
+def test_an_ensemble_answers_its_members_mean_with_their_spread(tmp_path):
+    import dataclasses
+
+    class Members(FakeLammps):
+        def run(self, infile, directory, np=1, variables=()):
+            done = super().run(infile, directory, np, variables)
+            seed = int(dict(variables)['seed'])
+            d = float(dict(variables)['d'])
+            with open(os.path.join(directory, 'log.lammps'), 'a') as f:     # the last line counts
+                f.write(f'elastic column: d = {d} m: settlement of the top row 1e-3 m = {1 + d + 0.01 * seed:.6f} '
+                        f'of exact, force on the wall 5e3 N/m = 1.0 of exact\n')
+            return done
+
+    check = dataclasses.replace(ELASTIC, ensemble=3, member_variables=(('perturb', '0.01'),))
+    lmp = Members()
+    result = convergence.convergence(lmp, check, arguments(tmp_path))
+    assert len(lmp.runs) == 9 and {r['perturb'] for r in lmp.runs} == {'0.01'}
+    assert sorted({r['seed'] for r in lmp.runs}) == ['1', '2', '3']
+    first = result['runs'][0]
+    assert first['answers']['settlement'] == pytest.approx(1.1 + 0.02)         # the mean of seeds 1-3
+    assert first['diagnostics']['settlement_spread'] == pytest.approx(0.01)     # their sample deviation
+    assert first['diagnostics']['settlement_members'] == pytest.approx([1.11, 1.12, 1.13])
+    # --members overrides the check's size
+    convergence.convergence(lmp, check, arguments(tmp_path, members=4))
+    assert len(lmp.runs) == 12

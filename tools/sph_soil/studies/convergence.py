@@ -13,7 +13,10 @@ CHECK is one of studies/convergence_checks.py (--list names them): an example ru
 (coarsest first, a constant ratio; the check's own sequence by default, --short its quick one),
 every answer a ratio to its exact or published value (1 is right). Then, at the finest spacing,
 the run again with the dissipation (Monaghan's alpha = beta, the example's `viscosity`) times each
-factor of --dissipation (0.5 and 2 by default; --no-dissipation skips them). --var sets an
+factor of --dissipation (0.5 and 2 by default; --no-dissipation skips them). A check of a chaotic
+problem (the bars' collapse) runs an ensemble at each point, its members the same run with the
+particles moved off their lattice by a tiny random amount (each member its own seed; --members
+sets their number): the answer is the members' mean, and its spread is reported. --var sets an
 input variable of every run (a variant of the scheme: --var correction=yes). Each run has its
 own directory under --workdir/CHECK, and a run whose directory already holds its answers
 (answers.json, written after the run with the variables it ran with) is not run again unless
@@ -58,18 +61,52 @@ def extra_variables(args):
     return pairs
 
 
-def tag(spacing, factor, extra=()):
-    """A run's directory: its spacing, dissipation factor and variant."""
+def tag(spacing, factor, extra=(), member=None):
+    """A run's directory: its spacing, dissipation factor, variant and ensemble member."""
     return (f'd{spacing:g}' + ('' if factor == 1.0 else f'_dissipation{factor:g}')
-            + ''.join(f'_{name}{value}' for name, value in extra))
+            + ''.join(f'_{name}{value}' for name, value in extra)
+            + ('' if member is None else f'_member{member}'))
 
 
-def run_one(lmp, check, spacing, factor, args):
+def members(check, args):
+    """The ensemble's size: --members, else the check's own (1: a single run)."""
+    return getattr(args, 'members', None) or check.ensemble
+
+
+def run_point(lmp, check, spacing, factor, args):
+    """The answers at one spacing and dissipation: one run's, or an ensemble's mean, with each
+    answer's spread (the sample standard deviation over the members) and the members' values
+    among the diagnostics."""
+    size = members(check, args)
+    if size <= 1:
+        return run_one(lmp, check, spacing, factor, args)
+    runs = [run_one(lmp, check, spacing, factor, args, member=k) for k in range(1, size + 1)]
+    point = {k: runs[0][k] for k in ('spacing', 'dissipation_factor', 'dissipation')}
+    point.update(returncode=max(r['returncode'] for r in runs),
+                 wall_seconds=round(sum(r['wall_seconds'] for r in runs), 1),
+                 directory=os.path.dirname(runs[0]['directory']), members=size, answers={}, diagnostics={})
+    for key in check.answers:
+        values = [r['answers'][key] for r in runs if key in r['answers']]
+        if values:
+            mean = sum(values) / len(values)
+            point['answers'][key] = mean
+            point['diagnostics'][f'{key}_members'] = values
+            point['diagnostics'][f'{key}_spread'] = (
+                (sum((v - mean) ** 2 for v in values) / (len(values) - 1)) ** 0.5 if len(values) > 1 else None)
+    errors = [r['error'] for r in runs if r.get('error')]
+    if errors:
+        point['error'] = f'{len(errors)} of {size} members: {errors[0]}'
+    return point
+
+
+def run_one(lmp, check, spacing, factor, args, member=None):
     """The answers of one run (from its directory when it already holds them)."""
     extra = extra_variables(args)
-    directory = os.path.join(args.workdir, check.name, tag(spacing, factor, extra))
+    directory = os.path.join(args.workdir, check.name, tag(spacing, factor, extra, member))
     variables = list(check.variables) + extra + [(check.spacing_variable, f'{spacing:.10g}'),
                                                  (check.dissipation_variable, f'{check.dissipation * factor:g}')]
+    if member is not None:
+        variables += list(check.member_variables) + [(check.member_variable, str(member))]
     saved = os.path.join(directory, 'answers.json')
     if not args.rerun and os.path.exists(saved):
         with open(saved) as f:
@@ -201,9 +238,9 @@ def plot(check, spacings, summary, out, extra=()):
 def convergence(lmp, check, args):
     spacings = tuple(args.spacings or (check.short_spacings if args.short else check.spacings))
     checks.ratio_of(spacings)
-    runs = [run_one(lmp, check, d, 1.0, args) for d in spacings]
+    runs = [run_point(lmp, check, d, 1.0, args) for d in spacings]
     factors = [] if (args.no_dissipation or args.short) else args.dissipation
-    dissipation_runs = [run_one(lmp, check, spacings[-1], f, args) for f in factors]
+    dissipation_runs = [run_point(lmp, check, spacings[-1], f, args) for f in factors]
     summary = judge(check, spacings, runs, dissipation_runs)
     result = {'check': check.name, 'title': check.title, 'reference': check.reference,
               'variant': dict(extra_variables(args)), 'spacings': list(spacings), 'ratio': checks.ratio_of(spacings),
@@ -226,6 +263,8 @@ def add_arguments(p):
     p.add_argument('--dissipation', type=float, nargs='+', default=[0.5, 2.0],
                    help='factors of the dissipation at the finest spacing (default: %(default)s)')
     p.add_argument('--no-dissipation', action='store_true')
+    p.add_argument('--members', type=int, default=None,
+                   help="the ensemble's size of a check that runs ensembles (the check's own by default)")
     p.add_argument('--var', action='append', metavar='NAME=VALUE',
                    help='an input variable of every run (repeatable): a variant of the scheme')
     p.add_argument('--workdir', default='/tmp/sph_soil_convergence')

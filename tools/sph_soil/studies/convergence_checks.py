@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from .. import paths
 from ..inputs import input_variables
 from .. import bisection
-from . import bearing_capacity, elastic_column, retaining_wall, vertical_cut
+from . import aluminium_bars, bearing_capacity, elastic_column, retaining_wall, vertical_cut
 
 
 COHESION = float(input_variables(paths.example_input('bearing_capacity'))['c'])   # Pa
@@ -40,6 +40,9 @@ class Check:
     dissipation: float = 1.0      # the example's own value of the dissipation variable
     solve: object = None          # solve(lmp, directory, variables, np) -> measure()'s dict, for a check
                                   # whose answer takes several runs (a bisection); None: one run
+    ensemble: int = 1             # members per point (a chaotic problem), each with its own seed:
+    member_variable: str = 'seed'     # the variable that takes the member's number
+    member_variables: tuple = ()      # and the variables that make a member differ (the perturbation)
 
     @property
     def infile(self):
@@ -126,6 +129,19 @@ def solve_vertical_cut(lmp, directory, variables, np):
             'runs': len(runs)}
 
 
+BARS_RUNOUT, BARS_ANGLE = 0.43, 32.9     # Bui et al. 2008's measured runout (m) and failure angle (deg)
+
+
+def measure_bars(directory, spacing):
+    surface, failure = aluminium_bars.read_experiment()
+    try:
+        s = aluminium_bars.measure(directory, surface, failure, spacing=spacing)['summary']
+    except (SystemExit, KeyError) as e:
+        raise RuntimeError(f'aluminium bars: the run in {directory} did not finish: {e}') from None
+    return {'runout': s['runout_m'] / BARS_RUNOUT, 'failure_angle': s['failure_angle_deg'] / BARS_ANGLE,
+            'surface_rms_m': s['surface_rms_m']}
+
+
 CHECKS = {c.name: c for c in [
     Check('elastic', 'elastic_column',
           'an elastic column settling under its own weight in a smooth box',
@@ -169,6 +185,11 @@ CHECKS = {c.name: c for c in [
           spacings=(0.1, 0.05, 0.025), short_spacings=(0.1, 0.05, 0.025),
           answers={'critical_ratio': f'the critical gamma H / c by bisection ({CUT_STEPS} steps) / 3.779'},
           measure=None, solve=solve_vertical_cut),
+    Check('bars', 'aluminium_bars', "the collapse of Bui et al. 2008's aluminium bars (an ensemble per spacing)",
+          'the measured runout, 0.43 m, and failure angle, 32.9 degrees',
+          spacings=(0.004, 0.002, 0.001), short_spacings=(0.008, 0.004, 0.002),
+          answers={'runout': 'the runout / 0.43 m', 'failure_angle': 'the failure angle / 32.9 degrees'},
+          measure=measure_bars, ensemble=5, member_variables=(('perturb', '0.01'),)),
 ]}
 
 def check(name):

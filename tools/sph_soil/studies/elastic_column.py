@@ -24,16 +24,17 @@ def measure(directory, log='log.lammps'):
     text = Log(os.path.join(directory, log))
     number = r'([-+0-9.eE]+)'
     exact = text.search(rf'exact settlement of the top row {number} m, exact wall force {number} N/m')
-    final = text.search(rf'elastic column: d = {number} m: settlement of the top row \S+ m = {number} of exact, '
-                        rf'force on the wall \S+ N/m = {number} of exact')
-    if exact is None or final is None:
+    finals = text.findall(rf'elastic column: d = {number} m: settlement of the top row \S+ m = {number} of exact, '
+                          rf'force on the wall \S+ N/m = {number} of exact')
+    if exact is None or not finals:
         errors = text.findall(r'ERROR.*')
         raise SystemExit(f'elastic-column: the run in {directory} did not finish'
                          + (f': {errors[-1]}' if errors else ''))
     data = np.loadtxt(os.path.join(directory, 'column.txt'), comments='#', ndmin=2)
-    return {'d_m': float(final.group(1)), 'settlement_exact_m': float(exact.group(1)),
+    final = finals[-1]      # the last line of the run
+    return {'d_m': float(final[0]), 'settlement_exact_m': float(exact.group(1)),
             'wall_force_exact_N_per_m': float(exact.group(2)),
-            'settlement_over_exact': float(final.group(2)), 'wall_force_over_exact': float(final.group(3)),
+            'settlement_over_exact': float(final[1]), 'wall_force_over_exact': float(final[2]),
             'time': data[:, 0], 'settlement': data[:, 1], 'force': data[:, 2]}
 
 
