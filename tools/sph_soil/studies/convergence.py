@@ -319,8 +319,9 @@ def table(filed):
                          fmt(last.get('gci'), '.1%'),
                          ' / '.join(fmt(change.get(f), '+.3%') for f in ('0.5', '2')),
                          'yes' if e.get('converges') else 'no'])
-    return report.rst_table(['check', 'answer', 'spacings (m)', 'answer / reference', 'order', 'extrapolated',
+    text = report.rst_table(['check', 'answer', 'spacings (m)', 'answer / reference', 'order', 'extrapolated',
                              'GCI', 'dissipation x0.5 / x2', 'converges'], rows)
+    return '\n'.join(line.rstrip() for line in text.split('\n'))
 
 
 def main(args):
