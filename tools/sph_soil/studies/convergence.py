@@ -164,6 +164,9 @@ def judge(check, spacings, runs, dissipation_runs):
     for key, what in check.answers.items():
         values = [r['answers'].get(key) for r in runs]
         entry = {'what': what, 'values': values, 'errors': [None if v is None else v - 1.0 for v in values]}
+        spreads = [r.get('diagnostics', {}).get(f'{key}_spread') for r in runs]
+        if any(x is not None for x in spreads):
+            entry['spreads'] = spreads      # an ensemble's: the members' standard deviation
         if all(v is not None for v in values) and len(values) >= 3:
             triples = verification.sequence(spacings, values)
             entry['triples'] = triples
@@ -207,7 +210,11 @@ def plot(check, spacings, summary, out, extra=()):
         if not pairs:
             continue
         ds, vs = zip(*pairs)
-        left.plot(ds, vs, 'o-', label='SPH')
+        if entry.get('spreads'):
+            spread = [x or 0.0 for d, x in zip(spacings, entry['spreads']) if d in ds]
+            left.errorbar(ds, vs, yerr=spread, fmt='o-', capsize=3, label='SPH: ensemble mean +- spread')
+        else:
+            left.plot(ds, vs, 'o-', label='SPH')
         left.axhline(1.0, color='k', lw=0.8, label='reference')
         if entry.get('extrapolated') is not None:
             left.axhline(entry['extrapolated'], color='tab:green', ls='--', lw=0.8,
