@@ -82,7 +82,7 @@ def add_arguments(p):
     runner.add_arguments(p, np=1)
     p.add_argument('--example', required=True)
     p.add_argument('--workdir', default=None)
-    p.add_argument('--var', action='append', default=[], help='extra NAME=VALUE input variables')
+    runner.add_variable_argument(p, 'an extra input variable (repeatable)')
     p.add_argument('--input', default=None, help='input file in the example directory (default: in.<example>)')
     p.add_argument('--name', default=None, help='name of the reference logs (default: the example), '
                    'for several variants of one example')
@@ -96,7 +96,7 @@ def main(a):
     name = a.name or a.example
     work = a.workdir or os.path.join(os.getcwd(), f'regression_{name}_np{a.np}')
     shutil.rmtree(work, ignore_errors=True)
-    variables = [('short', '1')] + [tuple(v.split('=', 1)) for v in a.var]
+    variables = [('short', '1')] + a.var
     run = lmp.run(infile, work, np=a.np, variables=variables, log='log.short')
     if not run.ok:
         if os.path.exists(run.log):

@@ -15,8 +15,10 @@ for a binary copied away from its build) plus Open MPI's permission to run as ro
 machines of this project need, and LAMMPS_POTENTIALS pointing at the checkout's potentials/,
 where the examples' material files are (inputs run from scratch directories find them there).
 """
+import argparse
 import glob
 import os
+import shutil
 import subprocess
 import time
 from dataclasses import dataclass
@@ -86,11 +88,18 @@ class Lammps:
         return cmd + list(extra)
 
     def run(self, infile, directory, np=1, variables=(), log='log.lammps', screen='none', extra=(),
-            prefix=(), outer=(), check=False, stdout=None, stderr=None, timeout=None):
+            prefix=(), outer=(), check=False, stdout=None, stderr=None, timeout=None, copy=False):
         """Run in `directory` (made if missing), with the files the input reads beside it linked
-        in (link_inputs); check=True raises CalledProcessError on failure."""
+        in (link_inputs); check=True raises CalledProcessError on failure. copy=True runs a copy
+        of the input made in `directory`: LAMMPS reads its input as it goes, and an edit of the
+        example during a long study must not change a run under way."""
         os.makedirs(directory, exist_ok=True)
         link_inputs(infile, directory)
+        if copy:
+            target = os.path.join(directory, os.path.basename(infile))
+            if os.path.abspath(target) != os.path.abspath(infile):
+                shutil.copy(infile, target)
+            infile = target
         cmd = self.command(infile, np, variables, log, screen, extra, prefix, outer)
         start = time.time()
         done = subprocess.run(cmd, cwd=directory, env=environment(), stdout=stdout, stderr=stderr,
@@ -130,6 +139,20 @@ def add_lmp_argument(parser):
     parser.add_argument('--lmp', default=None,
                         help=f'LAMMPS binary (default: ${BINARY_VARIABLE}, else lmp of the build directory '
                              'of SPH_SOIL_LAMMPS: build/ or build-<release>/; BUILD_DIR overrides)')
+
+
+def variable_setting(text):
+    """An argparse type: 'NAME=VALUE' -> (NAME, VALUE), an input variable set with -var."""
+    name, equals, value = text.partition('=')
+    if not name or not equals:
+        raise argparse.ArgumentTypeError(f"'{text}': NAME=VALUE expected")
+    return name, value
+
+
+def add_variable_argument(parser, help):
+    """--var NAME=VALUE, repeatable: (name, value) pairs in args.var ([] without any)."""
+    parser.add_argument('--var', action='append', default=[], type=variable_setting, metavar='NAME=VALUE',
+                        help=help)
 
 
 def add_arguments(parser, np=2):

@@ -52,17 +52,24 @@ def grid_convergence_index(medium, fine, order, ratio=2.0, safety=SAFETY):
     return safety * abs((fine - medium) / fine) / (ratio ** order - 1.0)
 
 
+def constant_ratio(spacings):
+    """The ratio of successive spacings, coarsest first (a ValueError unless there are at least
+    two and the ratio is constant)."""
+    ratios = [a / b for a, b in zip(spacings, spacings[1:])]
+    if not ratios or any(not math.isclose(r, ratios[0], rel_tol=1e-6) for r in ratios):
+        raise ValueError(f"spacings {tuple(spacings)}: need at least two, coarsest first, of a constant ratio")
+    return ratios[0]
+
+
 def sequence(spacings, answers):
     """Each consecutive triple of a sequence of answers, coarsest first, at spacings of a constant
     ratio: a dict per triple with its spacings, observed order, extrapolate and GCI."""
     if len(spacings) != len(answers):
         raise ValueError(f"{len(spacings)} spacings against {len(answers)} answers")
+    ratio = constant_ratio(spacings)
     rows = []
     for k in range(len(answers) - 2):
         d3, d2, d1 = spacings[k:k + 3]
-        ratio = d3 / d2
-        if not math.isclose(d2 / d1, ratio, rel_tol=1e-6):
-            raise ValueError(f"spacings {d3}, {d2}, {d1}: not of a constant ratio")
         f3, f2, f1 = answers[k:k + 3]
         p = observed_order(f3, f2, f1, ratio)
         rows.append(dict(spacings=[d3, d2, d1], ratio=ratio, observed_order=p,

@@ -6,7 +6,7 @@ import types
 
 import pytest
 
-from sph_soil import inputs
+from sph_soil import inputs, verification
 from sph_soil.studies import convergence
 from sph_soil.studies import convergence_checks as checks
 
@@ -66,7 +66,7 @@ class FakeLammps:
     def __init__(self):
         self.runs = []
 
-    def run(self, infile, directory, np=1, variables=()):
+    def run(self, infile, directory, np=1, variables=(), copy=False):
         os.makedirs(directory, exist_ok=True)
         self.runs.append(dict(variables))
         d = float(dict(variables)['d'])
@@ -84,7 +84,7 @@ class FakeLammps:
 
 def arguments(tmp_path, **kw):
     base = dict(spacings=None, short=True, no_dissipation=False, dissipation=[0.5, 2.0], workdir=str(tmp_path),
-                rerun=False, remeasure=False, np=1, json=None, plot=None, var=None)
+                rerun=False, remeasure=False, members=None, np=1, json=None, plot=None, var=None)
     base.update(kw)
     return types.SimpleNamespace(**base)
 
@@ -93,7 +93,8 @@ def test_runs_are_saved_and_not_run_again(tmp_path):
     lmp = FakeLammps()
     result = convergence.convergence(lmp, ELASTIC, arguments(tmp_path))
     assert [r['d'] for r in lmp.runs] == [f'{d:.10g}' for d in ELASTIC.short_spacings]
-    assert all(r['viscosity'] == '1' for r in lmp.runs)
+    own = f'{ELASTIC.dissipation:g}'                 # the check's own dissipation
+    assert all(r['viscosity'] == own for r in lmp.runs)
     # the answers as the log gave them, the order of a linear error 1
     assert result['answers']['settlement']['values'] == pytest.approx([1 + d for d in ELASTIC.short_spacings])
     assert result['answers']['settlement']['observed_order'] == pytest.approx(1.0, abs=1e-4)
@@ -103,12 +104,12 @@ def test_runs_are_saved_and_not_run_again(tmp_path):
     assert len(lmp.runs) == 6
     # the dissipation's runs at the finest spacing, with alpha = beta scaled (d = 0.1 is saved)
     convergence.convergence(lmp, ELASTIC, arguments(tmp_path, short=False, spacings=[0.4, 0.2, 0.1]))
-    assert [(r['d'], r['viscosity']) for r in lmp.runs[6:]] == [('0.4', '1'), ('0.2', '1'), ('0.1', '0.5'),
-                                                                ('0.1', '2')]
+    assert [(r['d'], r['viscosity']) for r in lmp.runs[6:]] == [
+        ('0.4', own), ('0.2', own), ('0.1', f'{0.5 * ELASTIC.dissipation:g}'), ('0.1', f'{2 * ELASTIC.dissipation:g}')]
     with open(os.path.join(tmp_path, 'elastic', 'd0.1_dissipation2', 'answers.json')) as f:
         assert json.load(f)['answers'] == {'settlement': 1.1, 'wall_force': 0.9}
     # a variant of the scheme: its own runs, the variable in each
-    convergence.convergence(lmp, ELASTIC, arguments(tmp_path, var=['correction=yes']))
+    convergence.convergence(lmp, ELASTIC, arguments(tmp_path, var=[('correction', 'yes')]))
     assert len(lmp.runs) == 13 and all(r['correction'] == 'yes' for r in lmp.runs[10:])
     assert os.path.exists(os.path.join(tmp_path, 'elastic', 'd0.025_correctionyes', 'answers.json'))
 
@@ -128,7 +129,7 @@ def test_remeasure_reads_the_saved_runs_again_without_running_them(tmp_path):
 
 def test_a_run_that_stops_gives_no_answer_and_names_why(tmp_path):
     class Stopping(FakeLammps):
-        def run(self, infile, directory, np=1, variables=()):
+        def run(self, infile, directory, np=1, variables=(), copy=False):
             os.makedirs(directory, exist_ok=True)
             with open(os.path.join(directory, 'log.lammps'), 'w') as f:
                 f.write('ERROR: sph/soil: particle 12 unstable at step 40\n')
@@ -147,13 +148,13 @@ def test_every_check_is_declared_consistently():
         assert float(variables[check.dissipation_variable]) == check.dissipation, check.name
         for name, _ in check.variables:
             assert name in variables, (check.name, name)
-        assert checks.ratio_of(check.spacings) and checks.ratio_of(check.short_spacings)
+        assert verification.constant_ratio(check.spacings) and verification.constant_ratio(check.short_spacings)
         assert len(check.spacings) >= 3 and check.answers
 
 
 def test_uneven_spacings_are_refused():
     with pytest.raises(ValueError):
-        checks.ratio_of((0.1, 0.05, 0.03))
+        verification.constant_ratio((0.1, 0.05, 0.03))
     with pytest.raises(SystemExit, match='no check'):
         checks.check('nonsense')
 
@@ -185,8 +186,8 @@ def test_an_ensemble_answers_its_members_mean_with_their_spread(tmp_path):
     import dataclasses
 
     class Members(FakeLammps):
-        def run(self, infile, directory, np=1, variables=()):
-            done = super().run(infile, directory, np, variables)
+        def run(self, infile, directory, np=1, variables=(), copy=False):
+            done = super().run(infile, directory, np, variables, copy)
             seed = int(dict(variables)['seed'])
             d = float(dict(variables)['d'])
             with open(os.path.join(directory, 'log.lammps'), 'a') as f:     # the last line counts

@@ -83,3 +83,14 @@ def test_atom_style_example(lmp, tmp_path, np):
     # the dump's 6 significant digits
     assert summary['max_error_sigma_yy_Pa'] < 1e-5 * abs(summary['deepest_sigma_yy_Pa'])
     assert (tmp_path / 'atom_style.png').stat().st_size > 0
+
+
+def test_variable_settings_parse_once_for_every_command():
+    import argparse
+    from sph_soil.runner import variable_setting
+    assert variable_setting('correction=yes') == ('correction', 'yes')
+    assert variable_setting('expr=a=b') == ('expr', 'a=b')          # the first '=' splits
+    assert variable_setting('empty=') == ('empty', '')
+    for bad in ('correction', '=yes'):
+        with pytest.raises(argparse.ArgumentTypeError, match='NAME=VALUE expected'):
+            variable_setting(bad)

@@ -120,9 +120,7 @@ def run(lmp, args, phi, resolution, speed):
     os.makedirs(directory, exist_ok=True)
     for old in glob.glob(os.path.join(directory, 'frame.*.png')):
         os.remove(old)
-    # LAMMPS reads its input as it goes: run a copy, which an edit of the example cannot change
-    shutil.copy(EXAMPLE, os.path.join(directory, 'in.bearing_capacity'))
-    done = lmp.run('in.bearing_capacity', directory, np=args.np, variables=[
+    done = lmp.run(EXAMPLE, directory, np=args.np, copy=True, variables=[
         ('phi', f'{phi:g}'), ('d', f'{d:.10g}'), ('speed', f'{speed:g}'), ('c', f'{args.c:g}'),
         ('slip', args.slip), ('tension', '-1' if args.tension == 'none' else args.tension),
         ('width', f'{args.width:g}'), ('depth', f'{args.depth:g}')] + refine_options.variables(args))

@@ -39,6 +39,7 @@ result under its name in doc/convergence.json (the numbers of doc/validation.rst
 import json
 import os
 import shutil
+import statistics
 import sys
 import time
 
@@ -52,13 +53,8 @@ SETTLED = 1.0e-3          # two finest answers closer than this have settled: no
 
 
 def extra_variables(args):
-    """--var NAME=VALUE settings as (name, value) pairs."""
-    pairs = []
-    for setting in args.var or []:
-        if '=' not in setting:
-            raise SystemExit(f'convergence: --var {setting}: NAME=VALUE expected')
-        pairs.append(tuple(setting.split('=', 1)))
-    return pairs
+    """The variant's input variables, --var NAME=VALUE: (name, value) pairs."""
+    return [tuple(v) for v in args.var or []]
 
 
 def tag(spacing, factor, extra=(), member=None):
@@ -70,7 +66,7 @@ def tag(spacing, factor, extra=(), member=None):
 
 def members(check, args):
     """The ensemble's size: --members, else the check's own (1: a single run)."""
-    return getattr(args, 'members', None) or check.ensemble
+    return args.members or check.ensemble
 
 
 def run_point(lmp, check, spacing, factor, args):
@@ -88,11 +84,9 @@ def run_point(lmp, check, spacing, factor, args):
     for key in check.answers:
         values = [r['answers'][key] for r in runs if key in r['answers']]
         if values:
-            mean = sum(values) / len(values)
-            point['answers'][key] = mean
+            point['answers'][key] = statistics.mean(values)
             point['diagnostics'][f'{key}_members'] = values
-            point['diagnostics'][f'{key}_spread'] = (
-                (sum((v - mean) ** 2 for v in values) / (len(values) - 1)) ** 0.5 if len(values) > 1 else None)
+            point['diagnostics'][f'{key}_spread'] = statistics.stdev(values) if len(values) > 1 else None
     errors = [r['error'] for r in runs if r.get('error')]
     if errors:
         point['error'] = f'{len(errors)} of {size} members: {errors[0]}'
@@ -112,7 +106,7 @@ def run_one(lmp, check, spacing, factor, args, member=None):
         with open(saved) as f:
             previous = json.load(f)
         if previous.get('variables') == [list(v) for v in variables]:
-            if getattr(args, 'remeasure', False) and not check.solve:
+            if args.remeasure and not check.solve:
                 return save(check, spacing, previous, saved)
             return previous
     os.makedirs(directory, exist_ok=True)
@@ -127,11 +121,7 @@ def run_one(lmp, check, spacing, factor, args, member=None):
             measured = e
         run.update(returncode=0 if isinstance(measured, dict) else 1, wall_seconds=round(time.time() - start, 1))
         return save(check, spacing, run, saved, measured)
-    # LAMMPS reads its input as it goes: run a copy, which an edit of the example cannot change
-    infile = os.path.join(directory, os.path.basename(check.infile))
-    shutil.copy(check.infile, infile)
-    runner.link_inputs(check.infile, directory)
-    done = lmp.run(infile, directory, np=args.np, variables=variables)
+    done = lmp.run(check.infile, directory, np=args.np, variables=variables, copy=True)
     run.update(returncode=done.returncode, wall_seconds=round(done.seconds, 1))
     return save(check, spacing, run, saved)
 
@@ -244,13 +234,13 @@ def plot(check, spacings, summary, out, extra=()):
 
 def convergence(lmp, check, args):
     spacings = tuple(args.spacings or (check.short_spacings if args.short else check.spacings))
-    checks.ratio_of(spacings)
+    verification.constant_ratio(spacings)
     runs = [run_point(lmp, check, d, 1.0, args) for d in spacings]
     factors = [] if (args.no_dissipation or args.short) else args.dissipation
     dissipation_runs = [run_point(lmp, check, spacings[-1], f, args) for f in factors]
     summary = judge(check, spacings, runs, dissipation_runs)
     result = {'check': check.name, 'title': check.title, 'reference': check.reference,
-              'variant': dict(extra_variables(args)), 'spacings': list(spacings), 'ratio': checks.ratio_of(spacings),
+              'variant': dict(extra_variables(args)), 'spacings': list(spacings), 'ratio': verification.constant_ratio(spacings),
               'dissipation_variable': check.dissipation_variable, 'dissipation': check.dissipation,
               'answers': summary,
               'runs': [{k: v for k, v in r.items() if k != 'variables'} for r in runs + dissipation_runs]}
@@ -272,8 +262,7 @@ def add_arguments(p):
     p.add_argument('--no-dissipation', action='store_true')
     p.add_argument('--members', type=int, default=None,
                    help="the ensemble's size of a check that runs ensembles (the check's own by default)")
-    p.add_argument('--var', action='append', metavar='NAME=VALUE',
-                   help='an input variable of every run (repeatable): a variant of the scheme')
+    runner.add_variable_argument(p, 'an input variable of every run (repeatable): a variant of the scheme')
     p.add_argument('--workdir', default='/tmp/sph_soil_convergence')
     p.add_argument('--rerun', action='store_true', help='run again where answers are saved')
     p.add_argument('--remeasure', action='store_true',

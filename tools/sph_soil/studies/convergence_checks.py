@@ -8,9 +8,7 @@ answer a ratio to its exact or published value, so that 1 is right. Each check s
 reference comes from. A new check is one entry here.
 """
 import importlib.util
-import math
 import os
-import shutil
 from dataclasses import dataclass
 
 from .. import paths
@@ -112,10 +110,8 @@ def solve_vertical_cut(lmp, directory, variables, np):
 
     def run(ratio):
         sub = os.path.join(directory, f'ratio{ratio:.4f}')
-        os.makedirs(sub, exist_ok=True)
-        infile = os.path.join(sub, os.path.basename(vertical_cut.EXAMPLE))
-        shutil.copy(vertical_cut.EXAMPLE, infile)
-        done = lmp.run(infile, sub, np=np, variables=list(variables) + [('ratio', f'{ratio:.6g}')])
+        done = lmp.run(vertical_cut.EXAMPLE, sub, np=np, copy=True,
+                       variables=list(variables) + [('ratio', f'{ratio:.6g}')])
         try:
             return vertical_cut.measure(sub, ratio, seconds=done.seconds)
         except SystemExit as e:
@@ -196,11 +192,3 @@ def check(name):
     if name not in CHECKS:
         raise SystemExit(f"convergence: no check '{name}'; the checks: {', '.join(CHECKS)}")
     return CHECKS[name]
-
-
-def ratio_of(spacings):
-    """The constant ratio of a sequence of spacings (a ValueError otherwise)."""
-    ratios = [a / b for a, b in zip(spacings, spacings[1:])]
-    if not ratios or any(not math.isclose(r, ratios[0], rel_tol=1e-6) for r in ratios):
-        raise ValueError(f'spacings {spacings}: need at least two, coarsest first, of a constant ratio')
-    return ratios[0]
