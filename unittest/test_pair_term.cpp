@@ -1,12 +1,15 @@
 // The pair term's pieces that are not covered by the LAMMPS-level tests: the mirrored stress of
 // a free-slip wall image, the Coulomb interface of a frictional wall, and the density's step.
 #include "soil_density_step.h"
+#include "soil_kernel_cubic.h"
 #include "soil_pair_terms.h"
 #include "soil_wall_friction.h"
 #include "soil_wall_images.h"
 
 #include "gtest/gtest.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 using namespace SPHSoil;
@@ -62,6 +65,56 @@ TEST(DrainedWall, GapIsMeasuredFromTheLatticePositionAndTheContactFadesWithIt)
   EXPECT_NEAR(contact_share<2>(0.5 * CONTACT_RANGE * spacing, volume), 0.5, 1e-12);
   EXPECT_EQ(contact_share<2>(CONTACT_RANGE * spacing, volume), 0.0);
   EXPECT_EQ(contact_share<2>(spacing, volume), 0.0);
+}
+
+// The wall's contact: nothing beyond the reach (3/4 of the mean spacing), rising linearly over a
+// quarter of the soil's spacing. Summed over a lattice of wall particles of the soil's spacing
+// (3 rows behind the plane y = 0), a particle standing on the wall (half a spacing from the
+// plane) is out of reach; one on the plane is within reach wherever it stands along the wall,
+// and is pushed back, harder the deeper it goes; a coarse soil particle (twice the wall's
+// spacing) at rest is out of reach too.
+TEST(WallContact, ReachesAParticleOnlyPastItsRestingPlace)
+{
+  const double s = 0.01;
+  EXPECT_EQ(contact_strain(0.75 * s, s, s), 0.0);
+  EXPECT_EQ(contact_strain(1.0 * s, s, s), 0.0);
+  EXPECT_NEAR(contact_strain(0.5 * s, s, s), 1.0, 1e-12);
+  EXPECT_NEAR(contact_strain(0.5 * s, 2.0 * s, s), 1.25, 1e-12);
+  EXPECT_EQ(contact_strain(1.5 * s, 2.0 * s, s), 0.0);
+
+  const double modulus = 1.0;
+  auto push = [&](double x, double y, double soil_spacing) {
+    double force[2] = {0.0, 0.0};
+    for (int i = -10; i <= 10; i++)
+      for (int k = 0; k < 3; k++) {
+        const double sep[3] = {x - (i + 0.5) * s, y + (k + 0.5) * s, 0.0};
+        const double r = std::sqrt(sep[0] * sep[0] + sep[1] * sep[1]);
+        const double strain = contact_strain(r, soil_spacing, s);
+        const double still[3] = {0.0, 0.0, 0.0};
+        if (strain > 0.0) add_contact_force<2>(modulus, 1.0, soil_spacing, strain, sep, r, still, 1.0, force);
+      }
+    return std::array<double, 2>{force[0], force[1]};
+  };
+  for (double x : {0.0, 0.2 * s, 0.5 * s}) {
+    const auto rest = push(x, 0.5 * s, s);
+    EXPECT_EQ(rest[0], 0.0);
+    EXPECT_EQ(rest[1], 0.0);
+    EXPECT_GT(push(x, 0.0, s)[1], 0.0) << "x = " << x;
+    EXPECT_GT(push(x, -0.2 * s, s)[1], push(x, 0.0, s)[1]) << "x = " << x;
+    EXPECT_EQ(push(x, 1.0 * s, 2.0 * s)[1], 0.0);
+  }
+  // directly over a wall particle, on the plane: one contact at strain 1, the modulus on the face
+  EXPECT_NEAR(push(0.5 * s, 0.0, s)[1], modulus * s, 1e-12);
+  // the dashpot: 4 rho c (critical damping of the spring) on the approach; never a pull
+  const double sep[3] = {0.0, 0.5 * s, 0.0}, rho = 2000.0, c = 100.0;
+  for (double approach : {0.0, 0.01, -0.01, -10.0}) {
+    double force[2] = {0.0, 0.0};
+    const double v[3] = {0.0, -approach, 0.0};
+    add_contact_force<2>(rho * c * c, rho * c, s, 0.2, sep, 0.5 * s, v, 1.0, force);
+    EXPECT_NEAR(force[1], std::max(0.0, s * (rho * c * c * 0.2 + 4.0 * rho * c * approach)), 1e-9)
+        << "approach " << approach;
+    EXPECT_EQ(force[0], 0.0);
+  }
 }
 
 TEST(DrainedWall, ImageAcrossAGapHoldsItsShareOfTheSoilAndTheWallsWater)

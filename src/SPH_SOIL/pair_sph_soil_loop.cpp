@@ -331,6 +331,21 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   const double mw = pw[P_MASS], volume = PHASES ? pw[P_VOLUME] : mw / rhos;
   const double mass_product =
       weight * (PHASES ? ps[P_VOLUME] * volume : ps[P_MASS] * mw);
+  // the wall particle's contact: a soil particle within its reach is pushed away whatever its
+  // stress (soil_wall_images.h; the test on h first spares the square roots), a force per unit
+  // mass product as the pair's
+  if (r2 < hij * hij) {
+    const double soil_spacing = SPHSoil::volume_spacing(ps[P_VOLUME], D);
+    const double r = std::sqrt(r2);
+    const double strain =
+        SPHSoil::contact_strain(r, soil_spacing, SPHSoil::volume_spacing(pw[P_VOLUME], D));
+    if (strain > 0.0) {
+      double relative[3] = {0.0, 0.0, 0.0};
+      for (int a = 0; a < D; a++) relative[a] = ps[P_V + a] - pw[P_V + a];
+      SPHSoil::add_contact_force<D>(rhos * c_ij * c_ij, rhos * c_ij, soil_spacing, strain,
+                                    separation, r, relative, weight / mass_product, terms.force);
+    }
+  }
   // a smooth or frictional wall pushes along its normal only, and never pulls (an interface
   // carries no tension: a soil in tension comes off it); a frictional wall's pushing pairs go
   // to the interface, which adds the friction after all forces of the step (doc/theory.rst 4.4)
