@@ -103,6 +103,18 @@ TEST(WallContact, ReachesAParticleOnlyPastItsRestingPlace)
     EXPECT_GT(push(x, -0.2 * s, s)[1], push(x, 0.0, s)[1]) << "x = " << x;
     EXPECT_EQ(push(x, 1.0 * s, 2.0 * s)[1], 0.0);
   }
+  // the bound without roots holds every pair in reach (2D and 3D, equal and unequal spacings)
+  for (double ratio : {0.25, 0.5, 1.0, 2.0, 4.0})
+    for (double fraction : {0.5, 0.9, 0.999, 1.001, 1.1}) {
+      const double sw = ratio * s, r = fraction * CONTACT_REACH * 0.5 * (s + sw);
+      const bool in_reach = contact_strain(r, s, sw) > 0.0;
+      if (in_reach) {
+        EXPECT_TRUE(contact_possible<2>(r * r, s * s, sw * sw)) << ratio << " " << fraction;
+        EXPECT_TRUE(contact_possible<3>(r * r, s * s * s, sw * sw * sw)) << ratio << " " << fraction;
+      }
+    }
+  EXPECT_FALSE(contact_possible<2>(s * s, s * s, s * s));    // a wall particle a spacing away
+  EXPECT_FALSE(contact_possible<3>(s * s, s * s * s, s * s * s));
   // directly over a wall particle, on the plane: one contact at strain 1, the modulus on the face
   EXPECT_NEAR(push(0.5 * s, 0.0, s)[1], modulus * s, 1e-12);
   // the dashpot: 4 rho c (critical damping of the spring) on the approach; never a pull

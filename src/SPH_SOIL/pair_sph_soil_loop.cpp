@@ -332,9 +332,9 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   const double mass_product =
       weight * (PHASES ? ps[P_VOLUME] * volume : ps[P_MASS] * mw);
   // the wall particle's contact: a soil particle within its reach is pushed away whatever its
-  // stress (soil_wall_images.h; the test on h first spares the square roots), a force per unit
-  // mass product as the pair's
-  if (r2 < hij * hij) {
+  // stress (soil_wall_images.h; a bound without roots first), a force per unit mass product as
+  // the pair's
+  if (SPHSoil::contact_possible<D>(r2, ps[P_VOLUME], pw[P_VOLUME])) {
     const double soil_spacing = SPHSoil::volume_spacing(ps[P_VOLUME], D);
     const double r = std::sqrt(r2);
     const double strain =

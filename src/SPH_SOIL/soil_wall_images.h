@@ -139,6 +139,20 @@ inline void mirror_image(const double *ps, const double *pw, const double normal
 constexpr double CONTACT_REACH = 0.75;
 constexpr double CONTACT_SKIN = 0.25;
 
+// Whether a soil particle of volume `soil_volume` and a wall particle of volume `wall_volume` at
+// squared distance r2 may be within the contact's reach, without a root: the mean of two spacings
+// is at most the D-th power mean of them, ((V_s + V_w) / 2)^(1/D), so reach^D <=
+// CONTACT_REACH^D (V_s + V_w) / 2 (true for every pair in reach; the loop then computes the
+// spacings only for the few that pass, none in a soil at rest)
+template <int DIMENSION>
+inline bool contact_possible(double r2, double soil_volume, double wall_volume)
+{
+  const double bound = 0.5 * (soil_volume + wall_volume);
+  if (DIMENSION == 2) return r2 < CONTACT_REACH * CONTACT_REACH * bound;
+  const double reach3 = CONTACT_REACH * CONTACT_REACH * CONTACT_REACH * bound;
+  return r2 * r2 * r2 < reach3 * reach3;
+}
+
 // the contact's overlap strain between a soil particle of spacing `soil_spacing` and a wall
 // particle of spacing `wall_spacing` at distance r: (reach - r) / (CONTACT_SKIN soil_spacing)
 // within reach, else 0
