@@ -1,5 +1,6 @@
 // The pair term's pieces that are not covered by the LAMMPS-level tests: the mirrored stress of
-// a free-slip wall image, the Coulomb interface of a frictional wall, and the density's step.
+// a free-slip wall image, which wall particles stand for an image past a convex corner, the
+// Coulomb interface of a frictional wall, and the density's step.
 #include "soil_density_step.h"
 #include "soil_kernel_cubic.h"
 #include "soil_pair_terms.h"
@@ -127,6 +128,55 @@ TEST(WallContact, ReachesAParticleOnlyPastItsRestingPlace)
         << "approach " << approach;
     EXPECT_EQ(force[0], 0.0);
   }
+}
+
+// A footing of spacing s: its base the plane y = 0 (normal -y, its particles at y = s/2, 3s/2),
+// its right side the plane x = 0 (normal +x, particles at x = -s/2, -3s/2, above the base's
+// corner rows). A soil particle beside the side and above the base's plane (behind it) stands in
+// front of the side: the base's particles stand for no image of it, the side's do. One under the
+// base is imaged by the base alone; past the corner, in front of both, by both. One that crossed
+// the base (behind every plane it pairs with) keeps the base's images, which push it back out.
+TEST(WallImage, PastAConvexCornerOnlyTheFaceInFrontImages)
+{
+  const double s = 0.01, half = 0.5 * s;
+  const double base_normal[3] = {0.0, -1.0, 0.0}, side_normal[3] = {1.0, 0.0, 0.0};
+  const double base_particle[PACKED] = {-half, half, 0.0};    // a packed row: position first
+  const double side_particle[PACKED] = {-half, 3.0 * half, 0.0};
+  auto beyond = [&](const double *soil, const double *wall, const double *n) {
+    const double separation[3] = {soil[0] - wall[0], soil[1] - wall[1], 0.0};
+    return beyond_wall_plane<2>(separation, n, half);
+  };
+  auto front_most = [&](const double *soil) {
+    return std::max(beyond(soil, base_particle, base_normal), beyond(soil, side_particle, side_normal));
+  };
+  auto images = [&](const double *soil) {
+    const double front = front_most(soil);
+    return std::array<bool, 2>{has_image<2>(soil, base_particle, base_normal, half, front),
+                               has_image<2>(soil, side_particle, side_normal, half, front)};
+  };
+  const double beside[PACKED] = {half, s, 0.0}, under[PACKED] = {-half, -half, 0.0},
+               past[PACKED] = {half, -half, 0.0};
+  EXPECT_EQ(images(beside), (std::array<bool, 2>{false, true}));
+  EXPECT_EQ(images(under), (std::array<bool, 2>{true, false}));
+  EXPECT_EQ(images(past), (std::array<bool, 2>{true, true}));
+  // crossed the base, far from the side (it pairs with the base only)
+  const double crossed[PACKED] = {-5.0 * s, 0.2 * s, 0.0};
+  const double alone = beyond(crossed, base_particle, base_normal);
+  EXPECT_LT(alone, 0.0);
+  EXPECT_TRUE(has_image<2>(crossed, base_particle, base_normal, half, alone));
+  // the pair's image says the same, and a particle without one takes no terms
+  const double soil_row[PACKED] = {half, s, 0.0, 0.3, 0.1, 0.0}, wall_row[PACKED] = {-half, half, 0.0};
+  MirrorImage image;
+  double separation[3] = {soil_row[0] - wall_row[0], soil_row[1] - wall_row[1], 0.0};
+  EXPECT_FALSE(mirror_image<2>(soil_row, wall_row, base_normal, half, front_most(soil_row), separation,
+                               SLIP_FREE, image));
+  EXPECT_NEAR(image.normal_separation, -half, 1e-15);
+  PairTerms<2> terms;
+  terms.force[0] = terms.gradient[1][1] = 1.0;
+  no_pair_terms<2>(terms);
+  EXPECT_EQ(terms.density_rate, 0.0);
+  EXPECT_EQ(terms.force[0], 0.0);
+  EXPECT_EQ(terms.gradient[1][1], 0.0);
 }
 
 TEST(DrainedWall, ImageAcrossAGapHoldsItsShareOfTheSoilAndTheWallsWater)

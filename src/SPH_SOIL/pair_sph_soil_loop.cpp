@@ -303,11 +303,14 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
   for (int a = 0; a < D; a++) separation[a] = sign * dx[a];
   SPHSoil::MirrorImage image;
   const int slip = walls->slips()[wall_type];
-  SPHSoil::mirror_image<D>(ps, pw, normal, wall_distance, separation, slip, image);
+  // (a soil particle beside another face of the wall's body has none: only the contact below
+  // acts on it)
+  const bool imaged = SPHSoil::mirror_image<D>(ps, pw, normal, wall_distance,
+                                               walls->front_most(soil), separation, slip, image);
   const double rhos = ps[P_RHO];
   // soil lifting off a drained wall leaves a gap of the wall's water (soil_wall_images.h), its
   // pressure in the packed stress's units (the multiphase form's is the stress itself)
-  if (walls->drained_mirror(wall_type)) {
+  if (imaged && walls->drained_mirror(wall_type)) {
     const double gap = walls->gap(wall);
     if (gap > 0.0) {
       const double wall_pressure =
@@ -321,9 +324,12 @@ SPH_SOIL_NOINLINE void PairSPHSoil::mirror_wall_pair(int soil, int wall, double 
       SPHSoil::viscosity_length(viscosity_h0, SPHSoil::viscosity_h_weight(viscosity_h0), hij);
   SPHSoil::PairTerms<D> terms;
   // (the multiphase form: the mean density's place holds (rho_s + rho_s) / (2 rho_s rho_s))
-  SPHSoil::pair_terms<D>(separation, r2, hij, viscosity_h, factor, image.dv, image.approach,
-                         image.stress_sum, PHASES ? 1.0 / rhos : rhos, c_ij, viscosity_alpha,
-                         viscosity_beta, terms);
+  if (imaged)
+    SPHSoil::pair_terms<D>(separation, r2, hij, viscosity_h, factor, image.dv, image.approach,
+                           image.stress_sum, PHASES ? 1.0 / rhos : rhos, c_ij, viscosity_alpha,
+                           viscosity_beta, terms);
+  else
+    SPHSoil::no_pair_terms<D>(terms);
   // the image's volume: the wall particle's mass at the soil's density (the paper's form, whose
   // sums weigh by mass); in the multiphase form, which weighs by volume, the wall particle's own,
   // so that a wall set up with the soil's mass holds free water at the water's pressure rather
@@ -410,7 +416,7 @@ void PairSPHSoil::eval()
   walls->prepare(packed, neighbours, kernel, D, PHASES);
   // the stress of each atom over its kernel's first moment (after the walls have written theirs)
   if (correction) {
-    correction->correct(packed, neighbours, wall_kind, walls->slips(), avec->wall_normal, kernel, D);
+    correction->correct(packed, neighbours, wall_kind, walls->slips(), walls->planes(), kernel, D);
     if (PHASES)
       for (int i = 0; i < atom->nlocal + atom->nghost; i++) {
         packed_pressure[i] *= correction->factor(i);

@@ -101,6 +101,17 @@ inline void pair_terms(const double dx[3], double r2, double h, double viscosity
   }
 }
 
+// a pair that exchanges nothing (a soil particle behind a mirror wall's plane, whose image is
+// not defined: soil_wall_images.h)
+template <int DIMENSION> inline void no_pair_terms(PairTerms<DIMENSION> &out)
+{
+  out.density_rate = 0.0;
+  for (int a = 0; a < DIMENSION; a++) {
+    out.force[a] = 0.0;
+    for (int b = 0; b < DIMENSION; b++) out.gradient[a][b] = 0.0;
+  }
+}
+
 }    // namespace SPHSoil
 
 #endif

@@ -56,10 +56,44 @@ inline double beyond_wall_plane(const double separation[3], const double n[3], d
   return beyond;
 }
 
+// The mirror walls' planes, per atom: the unit normal into the soil, the wall particle's distance
+// behind its plane, and for a soil particle the farthest it stands in front of the plane of any
+// mirror wall particle it pairs with (<= 0: it is behind all of them; SPHSoilWalls::prepare())
+struct MirrorPlanes {
+  double **normal;
+  const double *distance;
+  const double *front_most;
+};
+
+// Whether mirror wall particle w stands for the image of soil particle s, which is `beyond` in
+// front of w's plane and at most `front_most` in front of any mirror plane it pairs with: if s is
+// in front of w's plane, and if s is behind every plane (it crossed the wall: the images push it
+// back out, as the contact does). Not for s behind w's plane but in front of another: that is a
+// particle beside the other face of a body, past a convex corner (a footing's edge), whose mirror
+// point in w's plane lies in the soil. There the images of the base of a smooth footing held the
+// surface particle at its corner down while the heave beside the footing rose, then let it go
+// when their push turned into a pull, and it shot out of the box at 1.5 m/s (doc/theory.rst 4.3).
+inline bool has_image(double beyond, double front_most)
+{
+  return beyond > 0.0 || !(front_most > 0.0);
+}
+
+// has_image() for soil particle s and mirror wall particle w from their packed rows
+template <int DIMENSION>
+inline bool has_image(const double *ps, const double *pw, const double n[3], double wall_distance,
+                      double front_most)
+{
+  double separation[3] = {0.0, 0.0, 0.0};
+  for (int a = 0; a < DIMENSION; a++) separation[a] = ps[P_X + a] - pw[P_X + a];
+  return has_image(beyond_wall_plane<DIMENSION>(separation, n, wall_distance), front_most);
+}
+
 // The image of mirror wall particle w for soil particle s, from their packed rows
 // (soil_packed_rows.h): the velocity difference dv = v_s - v_image, the stress sum
 // sigma_s / rho_s^2 + sigma_image / rho_s^2, the approach dv . x_sw and the separation along the
 // normal (x_s - x_w) . n. `separation` = x_s - x_w.
+// Returns false, with only normal_separation set, where w stands for no image of s (has_image();
+// `front_most` is s's MirrorPlanes::front_most).
 // Behind a frictional wall (SLIP_FRICTION) the image is the free-slip one: the pair pushes
 // along the normal only (pushing_part()), and the tangential force is the Coulomb interface's
 // (soil_wall_friction.h), so that nothing else, not even the artificial viscosity, drags the
@@ -84,14 +118,15 @@ template <int DIMENSION> inline double pushing_part(double force[DIMENSION], con
 }
 
 template <int DIMENSION>
-inline void mirror_image(const double *ps, const double *pw, const double normal[3],
-                         double wall_distance, const double separation[3], int slip,
-                         MirrorImage &image)
+inline bool mirror_image(const double *ps, const double *pw, const double normal[3],
+                         double wall_distance, double front_most, const double separation[3],
+                         int slip, MirrorImage &image)
 {
   constexpr int D = DIMENSION;
   // the soil particle's distance beyond the wall plane
   const double ds = beyond_wall_plane<D>(separation, normal, wall_distance);
   image.normal_separation = ds + wall_distance;
+  if (!has_image(ds, front_most)) return false;
   const double beta = ds > 0.0 ? std::fmin(1.5, 1.0 + wall_distance / ds) : 1.5;
   // the image's stress: the soil particle's (no slip), or its mirror image (free slip and
   // friction: no shear traction); its velocity: the whole relative velocity (no slip), else
@@ -118,6 +153,7 @@ inline void mirror_image(const double *ps, const double *pw, const double normal
     approach += image.dv[a] * separation[a];
   }
   image.approach = approach;
+  return true;
 }
 
 /* The wall's contact (doc/theory.rst 4.3). An image carries the soil particle's own stress, so a

@@ -32,17 +32,17 @@ struct Moments {
   const double *packed;
   const NeighbourList &list;
   const int *wall_kind, *slips;
-  double **wall_normal;
+  MirrorPlanes planes;
   int dimension;
   template <class Kernel> void operator()() const
   {
     // (the scalar correction's pass compiled without the tensors' sums)
     if (correction->full()) {
-      if (dimension == 2) correction->moment_sums<2, Kernel, true>(packed, list, wall_kind, slips, wall_normal);
-      else correction->moment_sums<3, Kernel, true>(packed, list, wall_kind, slips, wall_normal);
+      if (dimension == 2) correction->moment_sums<2, Kernel, true>(packed, list, wall_kind, slips, planes);
+      else correction->moment_sums<3, Kernel, true>(packed, list, wall_kind, slips, planes);
     } else {
-      if (dimension == 2) correction->moment_sums<2, Kernel, false>(packed, list, wall_kind, slips, wall_normal);
-      else correction->moment_sums<3, Kernel, false>(packed, list, wall_kind, slips, wall_normal);
+      if (dimension == 2) correction->moment_sums<2, Kernel, false>(packed, list, wall_kind, slips, planes);
+      else correction->moment_sums<3, Kernel, false>(packed, list, wall_kind, slips, planes);
     }
   }
 };
@@ -50,11 +50,12 @@ struct Moments {
 
 void SPHSoilGradientCorrection::correct(double *packed, const NeighbourList &list,
                                         const int *wall_kind, const int *slips,
-                                        double **wall_normal, KernelKind kernel, int dimension)
+                                        const MirrorPlanes &planes, KernelKind kernel,
+                                        int dimension)
 {
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int *type = atom->type;
-  with_kernel(kernel, Moments{this, packed, list, wall_kind, slips, wall_normal, dimension});
+  with_kernel(kernel, Moments{this, packed, list, wall_kind, slips, planes, dimension});
   if (force->newton_pair) {
     exchange = MOMENT;
     SPHSoilCompat::reverse_comm_pair(comm, owner);
@@ -115,7 +116,7 @@ void SPHSoilGradientCorrection::tensor_correction(int i, bool soil, double facto
 template <int DIMENSION, class Kernel, bool FULL>
 void SPHSoilGradientCorrection::moment_sums(const double *packed, const NeighbourList &list,
                                             const int *wall_kind, const int *slips,
-                                            double **wall_normal)
+                                            const MirrorPlanes &planes)
 {
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton_pair = force->newton_pair;
@@ -156,8 +157,13 @@ void SPHSoilGradientCorrection::moment_sums(const double *packed, const Neighbou
       const int soil = wall_i ? j : i;
       const double *pw = wall_i ? pi : pj;
       const int wall = wall_i ? i : j;
+      // (where the wall particle stands for no image of the soil particle, it adds nothing, as
+      // in the pair loop: soil_wall_images.h)
+      if (!has_image<DIMENSION>(wall_i ? pj : pi, pw, planes.normal[wall], planes.distance[wall],
+                                planes.front_most[soil]))
+        continue;
       const bool smooth = FULL && slips[type[wall]] != SLIP_NONE;
-      if (newton_pair || soil < nlocal) add(soil, pw[P_VOLUME], g, smooth ? wall_normal[wall] : nullptr);
+      if (newton_pair || soil < nlocal) add(soil, pw[P_VOLUME], g, smooth ? planes.normal[wall] : nullptr);
     }
   }
 }

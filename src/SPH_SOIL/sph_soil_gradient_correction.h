@@ -23,6 +23,10 @@
 
 #include <vector>
 
+namespace SPHSoil {
+struct MirrorPlanes;
+}
+
 namespace LAMMPS_NS {
 
 class SPHSoilGradientCorrection : protected Pointers {
@@ -33,12 +37,13 @@ class SPHSoilGradientCorrection : protected Pointers {
   // the factors of the owned and ghost atoms (collective), from the packed rows (soil_packed_rows.h:
   // positions, h, volumes, masses, densities) and the pair list; `wall_kind` per type
   // (SPHSoil::NeighbourKind); then the packed rows' stress multiplied by them
-  // `slips` per type (SPHSoil::WallSlipCode) and `wall_normal` per atom: the mirror walls'
+  // `slips` per type (SPHSoil::WallSlipCode) and `planes` per atom: the mirror walls'
   void correct(double *packed, const SPHSoil::NeighbourList &list, const int *wall_kind,
-               const int *slips, double **wall_normal, SPHSoil::KernelKind kernel, int dimension);
+               const int *slips, const SPHSoil::MirrorPlanes &planes, SPHSoil::KernelKind kernel,
+               int dimension);
   template <int DIMENSION, class Kernel, bool FULL>
   void moment_sums(const double *packed, const SPHSoil::NeighbourList &list, const int *wall_kind,
-                   const int *slips, double **wall_normal);
+                   const int *slips, const SPHSoil::MirrorPlanes &planes);
 
   // owned or ghost atom i's factor at the last correct()
   double factor(int i) const { return factors[i]; }

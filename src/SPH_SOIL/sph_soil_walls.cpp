@@ -250,6 +250,42 @@ void SPHSoilWalls::prepare(double *packed, const NeighbourList &list, KernelKind
     if (dimension == 2) follow_lifting_soil<2>(packed, list);
     else follow_lifting_soil<3>(packed, list);
   }
+  // (after the drained walls have moved in their rows: the planes the pair loop sees)
+  if (has_mirror) {
+    if (dimension == 2) find_front_most<2>(packed, list);
+    else find_front_most<3>(packed, list);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   each soil particle's farthest distance in front of the plane of a mirror wall particle it
+   pairs with (soil_wall_images.h's has_image()): over this rank's pairs, then the largest over
+   every rank's to the owners, and back to the ghosts
+------------------------------------------------------------------------- */
+
+template <int DIMENSION>
+void SPHSoilWalls::find_front_most(const double *packed, const NeighbourList &list)
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  constexpr double NONE = -1.0e300;
+  fronts.assign(nall, NONE);
+  each_mirror_pair(list, nlocal, [&](int soil, int wall) {
+    const double *ps = packed + (size_t) soil * PACKED, *pw = packed + (size_t) wall * PACKED;
+    double separation[3] = {0.0, 0.0, 0.0};
+    for (int a = 0; a < DIMENSION; a++) separation[a] = ps[P_X + a] - pw[P_X + a];
+    const double beyond = beyond_wall_plane<DIMENSION>(separation, avec->wall_normal[wall],
+                                                       avec->wall_distance[wall]);
+    if (beyond > fronts[soil]) fronts[soil] = beyond;
+  });
+  exchange = Exchange::FRONTS;
+  if (force->newton_pair) SPHSoilCompat::reverse_comm_pair(comm, owner);
+  SPHSoilCompat::forward_comm_pair(comm, owner);
+  exchange = Exchange::EXTRAPOLATION;
+}
+
+SPHSoil::MirrorPlanes SPHSoilWalls::planes() const
+{
+  return {avec->wall_normal, avec->wall_distance, fronts.data()};
 }
 
 /* ----------------------------------------------------------------------
@@ -434,8 +470,9 @@ int SPHSoilWalls::pack_reverse_comm(int n, int first, double *buf)
 {
   if (exchange == Exchange::FRICTION) return friction->pack_reverse_comm(n, first, buf);
   int m = 0;
-  if (exchange == Exchange::GAPS) {
-    for (int i = first; i < first + n; i++) buf[m++] = gaps[i];
+  if (exchange == Exchange::GAPS || exchange == Exchange::FRONTS) {
+    const std::vector<double> &values = exchange == Exchange::GAPS ? gaps : fronts;
+    for (int i = first; i < first + n; i++) buf[m++] = values[i];
     return m;
   }
   for (int i = first; i < first + n; i++)
@@ -454,6 +491,10 @@ void SPHSoilWalls::unpack_reverse_comm(int n, int *list, double *buf)
     for (int k = 0; k < n; k++) gaps[list[k]] = std::min(gaps[list[k]], buf[m++]);
     return;
   }
+  if (exchange == Exchange::FRONTS) {
+    for (int k = 0; k < n; k++) fronts[list[k]] = std::max(fronts[list[k]], buf[m++]);
+    return;
+  }
   for (int k = 0; k < n; k++)
     for (int c = 0; c < XSUMS; c++) sums[(size_t) list[k] * XSUMS + c] += buf[m++];
 }
@@ -462,8 +503,9 @@ int SPHSoilWalls::pack_forward_comm(int n, int *list, double *buf)
 {
   if (exchange == Exchange::FRICTION) return friction->pack_forward_comm(n, list, buf);
   int m = 0;
-  if (exchange == Exchange::GAPS) {
-    for (int k = 0; k < n; k++) buf[m++] = gaps[list[k]];
+  if (exchange == Exchange::GAPS || exchange == Exchange::FRONTS) {
+    const std::vector<double> &values = exchange == Exchange::GAPS ? gaps : fronts;
+    for (int k = 0; k < n; k++) buf[m++] = values[list[k]];
     return m;
   }
   for (int k = 0; k < n; k++)
@@ -478,8 +520,9 @@ void SPHSoilWalls::unpack_forward_comm(int n, int first, double *buf)
     return;
   }
   int m = 0;
-  if (exchange == Exchange::GAPS) {
-    for (int i = first; i < first + n; i++) gaps[i] = buf[m++];
+  if (exchange == Exchange::GAPS || exchange == Exchange::FRONTS) {
+    std::vector<double> &values = exchange == Exchange::GAPS ? gaps : fronts;
+    for (int i = first; i < first + n; i++) values[i] = buf[m++];
     return;
   }
   for (int i = first; i < first + n; i++)
@@ -488,12 +531,15 @@ void SPHSoilWalls::unpack_forward_comm(int n, int first, double *buf)
 
 double SPHSoilWalls::memory_usage() const
 {
-  return (double) nmax * (XSUMS + WSTATE) * sizeof(double) + (double) gaps.capacity() * sizeof(double) +
+  return (double) nmax * (XSUMS + WSTATE) * sizeof(double) + (double) (gaps.capacity() + fronts.capacity()) * sizeof(double) +
       (friction ? friction->memory_usage() : 0.0);
 }
 
 /* ----------------------------------------------------------------------
-   the soil particle's distance beyond the wall's plane, (x_s - x_w) . n - d_w, below zero
+   owned soil particles behind the plane of every mirror wall particle they pair with on this
+   rank (the distance beyond it, (x_s - x_w) . n - d_w, below zero for all): soil that crossed a
+   wall. (Not one behind one plane and in front of another: it stands beside the other face of
+   a body, past a convex corner.)
 ------------------------------------------------------------------------- */
 
 bigint SPHSoilWalls::soil_behind_planes(const NeighbourList &list) const
@@ -501,15 +547,19 @@ bigint SPHSoilWalls::soil_behind_planes(const NeighbourList &list) const
   if (!has_mirror || !avec) return 0;
   const int nlocal = atom->nlocal;
   double **x = atom->x;
-  // each pair is listed at one of its atoms: mark the owned soil particles found behind
-  std::vector<char> behind(nlocal, 0);
+  // each pair is listed at one of its atoms: the owned soil particles' farthest distance in
+  // front of a plane, over the pairs found here
+  constexpr double NONE = -1.0e300;
+  std::vector<double> front(nlocal, NONE);
   each_mirror_pair(list, std::min(list.size(), nlocal), [&](int s, int w) {
     if (s >= nlocal) return;
     const double separation[3] = {x[s][0] - x[w][0], x[s][1] - x[w][1], x[s][2] - x[w][2]};
     const double beyond =
         beyond_wall_plane<3>(separation, avec->wall_normal[w], avec->wall_distance[w]);
-    if (beyond < 0.0) behind[s] = 1;
+    front[s] = std::max(front[s], beyond);
   });
+  std::vector<char> behind(nlocal, 0);
+  for (int s = 0; s < nlocal; s++) behind[s] = front[s] > NONE && front[s] < 0.0;
   bigint count = 0;
   for (char b : behind) count += b;
   return count;

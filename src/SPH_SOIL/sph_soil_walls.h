@@ -34,6 +34,10 @@
 #include <string>
 #include <vector>
 
+namespace SPHSoil {
+struct MirrorPlanes;
+}
+
 namespace LAMMPS_NS {
 
 class SPHSoilWalls : protected Pointers {
@@ -67,6 +71,11 @@ class SPHSoilWalls : protected Pointers {
   // soil lifting off it (0 in contact; soil_wall_images.h's drained_image()), this step
   bool drained_mirror(int type) const { return drained_mirror_of_type[type] != 0; }
   double gap(int i) const { return gaps[i]; }
+  // per owned or ghost soil particle, this step: the farthest it stands in front of the plane of
+  // a mirror wall particle it pairs with (<= 0: behind all of them; soil_wall_images.h's
+  // has_image()); and the mirror walls' planes with it
+  double front_most(int i) const { return fronts[i]; }
+  SPHSoil::MirrorPlanes planes() const;
 
   // before the pair loop, with the loop's packed rows (soil_packed_rows.h) of the owned and
   // ghost atoms and the pair list: turned normals to the ghosts; the extrapolated walls' state
@@ -95,6 +104,8 @@ class SPHSoilWalls : protected Pointers {
   // the gaps under soil lifting off drained mirror walls, each such wall particle moved in its
   // packed row to where the soil would touch it (public: prepare()'s dimension dispatch)
   template <int DIMENSION> void follow_lifting_soil(double *packed, const SPHSoil::NeighbourList &list);
+  // front_most() of every owned and ghost soil particle (public: prepare()'s dimension dispatch)
+  template <int DIMENSION> void find_front_most(const double *packed, const SPHSoil::NeighbourList &list);
 
   // the extrapolation's own pass over the soil-wall pairs (public: with_kernel() calls it)
   template <int DIMENSION, class Kernel>
@@ -108,8 +119,9 @@ class SPHSoilWalls : protected Pointers {
   bool has_mirror, has_extrapolated, has_friction, has_drained_mirror;
   class SPHSoilWallFriction *friction;
   // whose data the communication in progress carries
-  enum class Exchange { EXTRAPOLATION, FRICTION, GAPS } exchange;
-  std::vector<double> gaps;    // gap() of the owned and ghost atoms
+  enum class Exchange { EXTRAPOLATION, FRICTION, GAPS, FRONTS } exchange;
+  std::vector<double> gaps;      // gap() of the owned and ghost atoms
+  std::vector<double> fronts;    // front_most() of the owned and ghost atoms
   bool warned_reach = false;   // that soil has lifted off a drained wall beyond its reach
   bool may_turn;    // mirror walls and a fix that may turn them: their normals go to the
                     // ghosts every step
