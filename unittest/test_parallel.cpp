@@ -282,6 +282,47 @@ TEST_F(Parallel, FrictionalSlidingWithMigrationAndBalancing)
                            "thermo 0", "run 3000 post no"});
 }
 
+// A smooth footing (mirror walls: its base and its two sides, each particle on the plane of the
+// face it is nearest to) pushed 6 mm into cohesive soil, its left corner 2 mm from the ranks' cut
+// (x = 0.05 on 2 and on 4 ranks, cut along x): the soil under and beside it, whose images past the
+// corners follow each soil particle's farthest distance in front of a wall plane (doc/theory.rst
+// 4.3), with the gradient correction, whose moments follow the same rule. The same stress and
+// motion on 1, 2 and 4 ranks. (With this rank layout every soil-wall pair that decides lies on
+// the soil particle's rank: a run without the exchange of those distances passed too.)
+TEST_F(Parallel, FootingCornersAcrossTheRanks)
+{
+  HIDE_OUTPUT([&] {
+    for (const auto &line :
+         {"dimension 2", "boundary f f p", "atom_style sph/soil", "atom_modify map array",
+          "lattice sq 0.002 origin 0.5 0.5 0",
+          "region box block -0.006 0.106 -0.006 0.05 -0.001 0.001 units box", "create_box 3 box",
+          "region soil block 0 0.1 0 0.03 INF INF units box",
+          "region floor block -0.006 0.106 -0.006 0 INF INF units box",
+          "region footing block 0.048 0.068 0.03 0.046 INF INF units box",
+          "create_atoms 1 region soil", "create_atoms 2 region floor",
+          "create_atoms 3 region footing",
+          "sph_soil/set all mass $(2000*0.002*0.002) h 0.0024 density 2000",
+          "write_data footing.data"})
+      command(line);
+  });
+  expect_same_on_one_rank(
+      {"units si", "dimension 2", "boundary f f p", "atom_style sph/soil", "atom_modify map array",
+       "processors * 1 1", "read_data footing.data", "group soil type 1", "group floor type 2", "group footing type 3",
+       "variable tobase atom y-0.03", "variable toside atom 0.01-abs(x-0.058)",
+       "variable isbase atom (type==3)&&(v_tobase<=v_toside+1e-5)",
+       "variable isleft atom (type==3)&&(v_tobase>v_toside+1e-5)&&(x<0.058)",
+       "variable isright atom (type==3)&&(v_tobase>v_toside+1e-5)&&(x>0.058)",
+       "group base variable isbase", "group left variable isleft", "group right variable isright",
+       "sph_soil/set floor wall 0 0 0 0 1 0", "sph_soil/set base wall 0 0.03 0 0 -1 0",
+       "sph_soil/set left wall 0.048 0 0 -1 0 0", "sph_soil/set right wall 0.068 0 0 1 0 0",
+       "pair_style sph/soil alpha 1 beta 1 wall freeslip gradient_correction yes",
+       "pair_coeff 1 1 soil 2000 drucker_prager 2e6 0.3 0 0 1e4 fit exact tension 0",
+       "pair_coeff 2 2 wall freeslip", "pair_coeff 3 3 wall freeslip",
+       "fix integrate soil sph/soil", "fix push footing move linear 0 -0.5 0",
+       "neighbor 0.0005 bin", "neigh_modify every 1 delay 0 check yes",
+       "timestep 5e-6", "thermo 0", "run 2500 post no"});
+}
+
 // Saturated soil under free water (the pore pressure and its flow, the water's pressure, the
 // multiphase form, the gradient correction's moments and factors across the ranks) drifting
 // across the ranks under dynamic balancing: the same stress and pore pressure on 1, 2 and 4

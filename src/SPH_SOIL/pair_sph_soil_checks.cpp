@@ -257,7 +257,7 @@ void PairSPHSoil::warn_coinciding()
 
 bigint PairSPHSoil::soil_behind_walls() const
 {
-  const bigint mine = walls->soil_behind_planes(neighbours);
+  const bigint mine = walls->soil_behind_planes();
   bigint all = 0;
   MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   return all;

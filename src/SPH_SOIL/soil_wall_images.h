@@ -78,14 +78,22 @@ inline bool has_image(double beyond, double front_most)
   return beyond > 0.0 || !(front_most > 0.0);
 }
 
+// beyond_wall_plane() of soil particle s and mirror wall particle w from their packed rows
+template <int DIMENSION>
+inline double beyond_wall_plane(const double *ps, const double *pw, const double n[3],
+                                double wall_distance)
+{
+  double separation[3] = {0.0, 0.0, 0.0};
+  for (int a = 0; a < DIMENSION; a++) separation[a] = ps[P_X + a] - pw[P_X + a];
+  return beyond_wall_plane<DIMENSION>(separation, n, wall_distance);
+}
+
 // has_image() for soil particle s and mirror wall particle w from their packed rows
 template <int DIMENSION>
 inline bool has_image(const double *ps, const double *pw, const double n[3], double wall_distance,
                       double front_most)
 {
-  double separation[3] = {0.0, 0.0, 0.0};
-  for (int a = 0; a < DIMENSION; a++) separation[a] = ps[P_X + a] - pw[P_X + a];
-  return has_image(beyond_wall_plane<DIMENSION>(separation, n, wall_distance), front_most);
+  return has_image(beyond_wall_plane<DIMENSION>(ps, pw, n, wall_distance), front_most);
 }
 
 // The image of mirror wall particle w for soil particle s, from their packed rows

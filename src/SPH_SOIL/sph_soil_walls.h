@@ -98,8 +98,9 @@ class SPHSoilWalls : protected Pointers {
   int pack_reverse_comm(int n, int first, double *buf);
   void unpack_reverse_comm(int n, int *list, double *buf);
   double memory_usage() const;
-  // owned soil particles beyond the plane of a mirror wall particle they pair with (this rank)
-  bigint soil_behind_planes(const SPHSoil::NeighbourList &list) const;
+  // owned soil particles behind the plane of every mirror wall particle they paired with at the
+  // last pair loop, over every rank's pairs (this rank's owned particles)
+  bigint soil_behind_planes() const;
 
   // the gaps under soil lifting off drained mirror walls, each such wall particle moved in its
   // packed row to where the soil would touch it (public: prepare()'s dimension dispatch)
@@ -122,6 +123,7 @@ class SPHSoilWalls : protected Pointers {
   enum class Exchange { EXTRAPOLATION, FRICTION, GAPS, FRONTS } exchange;
   std::vector<double> gaps;      // gap() of the owned and ghost atoms
   std::vector<double> fronts;    // front_most() of the owned and ghost atoms
+  static constexpr double NO_FRONT = -1.0e300;    // fronts' value without a mirror partner
   bool warned_reach = false;   // that soil has lifted off a drained wall beyond its reach
   bool may_turn;    // mirror walls and a fix that may turn them: their normals go to the
                     // ghosts every step
